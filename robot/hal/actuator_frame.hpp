@@ -9,10 +9,10 @@ namespace stride::hal {
 enum class ServoMode : int { Position, Torque };
 
 struct ActuatorFrame {
-  std::array<ServoMode, kNumJoints> mode{};   // Position unless a controller commands torque
-  std::array<double, kNumJoints> position{};  // rad, used in Position mode
-  std::array<double, kNumJoints> stiffness{}; // 0..1, scales the available torque
-  std::array<double, kNumJoints> torque{};    // N*m at the joint, used in Torque mode
+  std::array<ServoMode, kNumJoints> mode{};    // Position unless a controller commands torque
+  std::array<double, kNumJoints> position{};   // rad, used in Position mode
+  std::array<double, kNumJoints> stiffness{};  // 0..1, scales the available torque
+  std::array<double, kNumJoints> torque{};     // N*m at the joint, used in Torque mode
 };
 
 }  // namespace stride::hal

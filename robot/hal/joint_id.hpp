@@ -7,25 +7,48 @@
 namespace stride::hal {
 
 enum class JointId : int {
-  HeadYaw, HeadPitch,
-  LShoulderPitch, LShoulderRoll, LElbowYaw, LElbowRoll, LWristYaw,
-  LHipYawPitch, LHipRoll, LHipPitch, LKneePitch, LAnklePitch, LAnkleRoll,
-  RHipRoll, RHipPitch, RKneePitch, RAnklePitch, RAnkleRoll,
-  RShoulderPitch, RShoulderRoll, RElbowYaw, RElbowRoll, RWristYaw,
-  LHand, RHand
+  HeadYaw,
+  HeadPitch,
+  LShoulderPitch,
+  LShoulderRoll,
+  LElbowYaw,
+  LElbowRoll,
+  LWristYaw,
+  LHipYawPitch,
+  LHipRoll,
+  LHipPitch,
+  LKneePitch,
+  LAnklePitch,
+  LAnkleRoll,
+  RHipRoll,
+  RHipPitch,
+  RKneePitch,
+  RAnklePitch,
+  RAnkleRoll,
+  RShoulderPitch,
+  RShoulderRoll,
+  RElbowYaw,
+  RElbowRoll,
+  RWristYaw,
+  LHand,
+  RHand
 };
 
 inline constexpr int kNumJoints = 25;
 
 inline constexpr std::array<std::string_view, kNumJoints> kJointNames = {
-    "HeadYaw",        "HeadPitch",     "LShoulderPitch", "LShoulderRoll", "LElbowYaw",
-    "LElbowRoll",     "LWristYaw",     "LHipYawPitch",   "LHipRoll",      "LHipPitch",
-    "LKneePitch",     "LAnklePitch",   "LAnkleRoll",     "RHipRoll",      "RHipPitch",
-    "RKneePitch",     "RAnklePitch",   "RAnkleRoll",     "RShoulderPitch", "RShoulderRoll",
-    "RElbowYaw",      "RElbowRoll",    "RWristYaw",      "LHand",         "RHand"};
+    "HeadYaw",    "HeadPitch",   "LShoulderPitch", "LShoulderRoll",  "LElbowYaw",
+    "LElbowRoll", "LWristYaw",   "LHipYawPitch",   "LHipRoll",       "LHipPitch",
+    "LKneePitch", "LAnklePitch", "LAnkleRoll",     "RHipRoll",       "RHipPitch",
+    "RKneePitch", "RAnklePitch", "RAnkleRoll",     "RShoulderPitch", "RShoulderRoll",
+    "RElbowYaw",  "RElbowRoll",  "RWristYaw",      "LHand",          "RHand"};
 
-constexpr int index(JointId j) { return static_cast<int>(j); }
-constexpr std::string_view name(JointId j) { return kJointNames[index(j)]; }
+constexpr int index(JointId j) {
+  return static_cast<int>(j);
+}
+constexpr std::string_view name(JointId j) {
+  return kJointNames[index(j)];
+}
 
 inline std::optional<JointId> joint_from_name(std::string_view n) {
   for (int i = 0; i < kNumJoints; ++i)

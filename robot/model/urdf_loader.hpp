@@ -1,0 +1,14 @@
+#pragma once
+// URDF -> RobotModel through urdfdom. Any URDF whose collisions are boxes, cylinders and spheres.
+#include <string>
+
+#include "robot/model/robot_model.hpp"
+
+namespace stride::model {
+
+// Throws stride::Error with "file:line: what was expected" on any problem; never returns a
+// partial model.
+RobotModel load_urdf(const std::string& path);
+RobotModel parse_urdf(const std::string& xml, const std::string& source_name);
+
+}  // namespace stride::model
