@@ -1,0 +1,148 @@
+#include "robot/framework/type_desc.hpp"
+
+#include <sstream>
+
+namespace stride {
+
+bool is_integer(Kind k) {
+  return k == Kind::Int8 || k == Kind::UInt8 || k == Kind::Int32 || k == Kind::UInt32 ||
+         k == Kind::Int64;
+}
+bool is_number(Kind k) {
+  return is_integer(k) || k == Kind::Float || k == Kind::Double;
+}
+
+std::string type_label(const TypeDesc& d) {
+  switch (d.kind) {
+    case Kind::Array:
+      return type_label(*d.element) + "[" + std::to_string(d.length) + "]";
+    case Kind::List:
+      return type_label(*d.element) + "[]";
+    default:
+      return d.name;
+  }
+}
+
+namespace {
+
+void describe_into(const TypeDesc& d, int indent, std::ostringstream& out) {
+  const TypeDesc* leaf = &d;
+  while (leaf->kind == Kind::Array || leaf->kind == Kind::List) leaf = leaf->element.get();
+  if (leaf->kind == Kind::Enum) {
+    out << " (";
+    for (std::size_t i = 0; i < leaf->enumerators.size(); ++i)
+      out << (i ? "|" : "") << leaf->enumerators[i];
+    out << ")";
+  }
+  if (leaf->kind != Kind::Struct) return;
+  for (const auto& f : leaf->fields) {
+    out << "\n" << std::string(indent, ' ') << f.name << ": " << type_label(*f.type);
+    if (!f.unit.empty()) out << " [" << f.unit << "]";
+    if (f.range) out << " in [" << f.range->min << ", " << f.range->max << "]";
+    describe_into(*f.type, indent + 2, out);
+  }
+}
+
+constexpr int kMaxDepth = 32;  // a hostile description must not exhaust the stack
+
+TypeDescPtr read_desc(ByteReader& r, int depth) {
+  if (depth > kMaxDepth) throw Error("type description nested deeper than 32 levels");
+  auto d = std::make_shared<TypeDesc>();
+  const auto kind = r.get<std::uint8_t>();
+  if (kind > static_cast<std::uint8_t>(Kind::Struct))
+    throw Error("type description: unknown kind " + std::to_string(kind));
+  d->kind = static_cast<Kind>(kind);
+  d->name = r.get_string();
+  switch (d->kind) {
+    case Kind::Enum: {
+      const auto n = r.get<std::uint32_t>();
+      if (n > r.remaining()) throw Error("type description: enumerator count too large");
+      for (std::uint32_t i = 0; i < n; ++i) d->enumerators.push_back(r.get_string());
+      break;
+    }
+    case Kind::Array:
+      d->length = r.get<std::uint64_t>();
+      d->vector_components = r.get<std::uint8_t>() != 0;
+      d->element = read_desc(r, depth + 1);
+      break;
+    case Kind::List:
+      d->element = read_desc(r, depth + 1);
+      break;
+    case Kind::Struct: {
+      const auto n = r.get<std::uint32_t>();
+      if (n > r.remaining()) throw Error("type description: field count too large");
+      for (std::uint32_t i = 0; i < n; ++i) {
+        FieldDesc f;
+        f.name = r.get_string();
+        f.unit = r.get_string();
+        if (r.get<std::uint8_t>()) {
+          const double lo = r.get<double>();
+          f.range = Range{lo, r.get<double>()};
+        }
+        f.type = read_desc(r, depth + 1);
+        d->fields.push_back(std::move(f));
+      }
+      break;
+    }
+    default:
+      break;
+  }
+  return d;
+}
+
+}  // namespace
+
+std::string describe_text(const TypeDesc& d) {
+  std::ostringstream out;
+  out << type_label(d);
+  describe_into(d, 2, out);
+  return out.str();
+}
+
+void write_type_desc(ByteWriter& w, const TypeDesc& d) {
+  w.put(static_cast<std::uint8_t>(d.kind));
+  w.put_string(d.name);
+  switch (d.kind) {
+    case Kind::Enum:
+      w.put(static_cast<std::uint32_t>(d.enumerators.size()));
+      for (const auto& e : d.enumerators) w.put_string(e);
+      break;
+    case Kind::Array:
+      w.put(static_cast<std::uint64_t>(d.length));
+      w.put(static_cast<std::uint8_t>(d.vector_components));
+      write_type_desc(w, *d.element);
+      break;
+    case Kind::List:
+      write_type_desc(w, *d.element);
+      break;
+    case Kind::Struct:
+      w.put(static_cast<std::uint32_t>(d.fields.size()));
+      for (const auto& f : d.fields) {
+        w.put_string(f.name);
+        w.put_string(f.unit);
+        w.put(static_cast<std::uint8_t>(f.range.has_value()));
+        if (f.range) {
+          w.put(f.range->min);
+          w.put(f.range->max);
+        }
+        write_type_desc(w, *f.type);
+      }
+      break;
+    default:
+      break;
+  }
+}
+
+TypeDescPtr read_type_desc(ByteReader& r) {
+  return read_desc(r, 0);
+}
+
+bool same_type(const TypeDesc& a, const TypeDesc& b) {
+  std::string x, y;
+  ByteWriter wx(x), wy(y);
+  write_type_desc(wx, a);
+  write_type_desc(wy, b);
+  return x == y;
+}
+
+}  // namespace stride

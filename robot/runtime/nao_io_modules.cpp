@@ -1,0 +1,89 @@
+#include "robot/runtime/nao_io_modules.hpp"
+
+#include <algorithm>
+
+#include "robot/nao/nao_dimensions.hpp"
+
+namespace stride {
+
+Eigen::Vector2d foot_cop(const double* forces, const Eigen::Vector2d* positions) {
+  double total = 0;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (int i = 0; i < 4; ++i) {
+    total += forces[i];
+    sum += forces[i] * positions[i];
+  }
+  return total > 0 ? Eigen::Vector2d(sum / total) : Eigen::Vector2d::Zero();
+}
+
+FsrSensorData fsr_sensor_data(const hal::SensorFrame& s, double contact_force) {
+  FsrSensorData f;
+  f.force = s.fsr;
+  for (int i = 0; i < 4; ++i) {
+    f.total_left += s.fsr[i];
+    f.total_right += s.fsr[i + 4];
+  }
+  f.contact_left = f.total_left > contact_force;
+  f.contact_right = f.total_right > contact_force;
+  f.cop_left = foot_cop(s.fsr.data(), nao::kFsrPositions.data());
+  f.cop_right = foot_cop(s.fsr.data() + 4, nao::kFsrPositions.data() + 4);
+  return f;
+}
+
+namespace {
+
+class SensorConversion final : public Module {
+ public:
+  explicit SensorConversion(ModuleContext& c)
+      : sensor_(c.require<hal::SensorFrame>()),
+        params_(c.parameters<SensorConversionParameters>()),
+        joints_(c.provide<JointSensorData>()),
+        inertial_(c.provide<InertialSensorData>()),
+        fsr_(c.provide<FsrSensorData>()) {}
+
+  void update() override {
+    joints_.position = sensor_.position;
+    joints_.current = sensor_.current;
+    joints_.temperature = sensor_.temperature;
+    joints_.stiffness = sensor_.stiffness;
+    inertial_.acc = Eigen::Vector3d(sensor_.accelerometer.data());
+    inertial_.gyro = Eigen::Vector3d(sensor_.gyroscope.data());
+    inertial_.angles = Eigen::Vector2d(sensor_.angles.data());
+    fsr_ = fsr_sensor_data(sensor_, params_.contact_force);
+  }
+
+ private:
+  const hal::SensorFrame& sensor_;
+  const SensorConversionParameters& params_;
+  JointSensorData& joints_;
+  InertialSensorData& inertial_;
+  FsrSensorData& fsr_;
+};
+
+class ActuatorConversion final : public Module {
+ public:
+  explicit ActuatorConversion(ModuleContext& c)
+      : request_(c.require<JointRequest>()), out_(c.provide<hal::ActuatorFrame>()) {}
+
+  void update() override {
+    out_.mode = request_.mode;
+    out_.position = request_.position;
+    out_.torque = request_.torque;
+    // Stiffness outside 0..1 is meaningless to the servos; clamp rather than pass it on.
+    for (int i = 0; i < hal::kNumJoints; ++i)
+      out_.stiffness[i] = std::clamp(request_.stiffness[i], 0.0, 1.0);
+  }
+
+ private:
+  const JointRequest& request_;
+  hal::ActuatorFrame& out_;
+};
+
+}  // namespace
+
+void register_nao_io_modules(ModuleRegistry& registry) {
+  registry.add<SensorConversion>("SensorConversion");
+  registry.add<ActuatorConversion>("ActuatorConversion");
+}
+
+}  // namespace stride

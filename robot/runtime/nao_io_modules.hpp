@@ -1,0 +1,32 @@
+#pragma once
+// The NAO's sensor and actuator conversions: raw link data <-> representations.
+//   SensorConversion:   SensorFrame -> JointSensorData, InertialSensorData, FsrSensorData
+//   ActuatorConversion: JointRequest -> ActuatorFrame
+#include <Eigen/Core>
+
+#include "robot/framework/module_registry.hpp"
+#include "robot/representations/fsr_sensor_data.hpp"
+#include "robot/representations/inertial_sensor_data.hpp"
+#include "robot/representations/joint_request.hpp"
+#include "robot/representations/joint_sensor_data.hpp"
+
+namespace stride {
+
+struct SensorConversionParameters {
+  double contact_force = 2.0;  // a foot is in contact when its FSRs sum to more than this
+
+  static constexpr std::string_view kTypeName = "SensorConversionParameters";
+  static constexpr auto fields() {
+    return std::make_tuple(
+        field("contact_force", &SensorConversionParameters::contact_force, "N", Range{0, 200}));
+  }
+};
+
+// Centre of pressure of one foot: force-weighted mean of its 4 FSR positions (ankle frame);
+// zero when the total force is not positive.
+Eigen::Vector2d foot_cop(const double* forces, const Eigen::Vector2d* positions);
+FsrSensorData fsr_sensor_data(const hal::SensorFrame& s, double contact_force);
+
+void register_nao_io_modules(ModuleRegistry& registry);
+
+}  // namespace stride

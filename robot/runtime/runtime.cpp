@@ -1,0 +1,315 @@
+#include "robot/runtime/runtime.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace stride {
+
+namespace {
+
+const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes"};
+
+struct Key {
+  bool representation;
+  std::string name;
+  std::string path;
+};
+
+Key split_key(std::string_view key) {
+  Key k;
+  std::string_view rest;
+  if (key.starts_with("representation:")) {
+    k.representation = true;
+    rest = key.substr(15);
+  } else if (key.starts_with("module:")) {
+    k.representation = false;
+    rest = key.substr(7);
+  } else {
+    throw Error("key '" + std::string(key) + "': expected representation:<Name> or module:<Name>");
+  }
+  const auto cut = std::min(rest.find('.'), rest.find('['));
+  k.name = std::string(rest.substr(0, cut));
+  if (cut != std::string_view::npos)
+    k.path = std::string(rest.substr(rest[cut] == '.' ? cut + 1 : cut));
+  if (k.name.empty()) throw Error("key '" + std::string(key) + "': expected a name after ':'");
+  return k;
+}
+
+}  // namespace
+
+struct Runtime::ModuleEntry {
+  std::string name;
+  std::set<std::string> owns;                  // representations it is the chosen provider of
+  std::vector<std::unique_ptr<Slot>> scratch;  // outputs nobody reads (another module provides)
+  std::unique_ptr<Module> module;              // last: destroyed before the slots it refers to
+};
+
+class Runtime::Context final : public ModuleContext {
+ public:
+  Context(Runtime& rt, const std::string& name, ModuleEntry* entry)
+      : rt_(rt), name_(name), entry_(entry) {}
+
+  DebugRequest debug_request(std::string_view name) override {
+    return {&rt_.debug_bits_, rt_.debug_request_index(name)};
+  }
+  const std::string& module_name() const override { return name_; }
+
+  ModuleDeclaration declaration;               // filled when entry_ is null (declaring only)
+  std::vector<std::unique_ptr<Slot>> scratch;  // declaring only
+
+ protected:
+  Slot& bind(Use use, std::string_view name, std::type_index type, SlotFactory make) override {
+    if (use == Use::Parameters) {
+      auto& p = rt_.parameters_[name_];
+      if (!p) p = make();
+      if (p->type() != type)
+        throw Error("module '" + name_ + "' asks for two different parameter types");
+      return *p;
+    }
+    if (!entry_) {
+      (use == Use::Require ? declaration.requires_ : declaration.provides).emplace_back(name);
+      scratch.push_back(make());
+      return *scratch.back();
+    }
+    if (use == Use::Require || entry_->owns.count(std::string(name)))
+      return rt_.blackboard_slot(name, type, make);
+    entry_->scratch.push_back(make());
+    return *entry_->scratch.back();
+  }
+
+ private:
+  Runtime& rt_;
+  std::string name_;
+  ModuleEntry* entry_;
+};
+
+Runtime::Runtime(const ModuleRegistry& registry, RuntimeConfig config, hal::HardwareLink& link)
+    : registry_(registry), config_(std::move(config)), link_(link) {
+  sensor_ = &slot_value<hal::SensorFrame>(
+      blackboard_slot("SensorFrame", typeid(hal::SensorFrame), &make_slot<hal::SensorFrame>));
+  frame_info_ = &slot_value<FrameInfo>(
+      blackboard_slot("FrameInfo", typeid(FrameInfo), &make_slot<FrameInfo>));
+  times_ = &slot_value<ModuleTimes>(
+      blackboard_slot("ModuleTimes", typeid(ModuleTimes), &make_slot<ModuleTimes>));
+
+  for (const auto& name : registry_.names()) {
+    Context c(*this, name, nullptr);
+    (*registry_.find(name))(c).reset();  // only the declarations are wanted
+    c.declaration.name = name;
+    declarations_.push_back(std::move(c.declaration));
+  }
+
+  std::map<std::string, std::string> updates;  // module -> "field=value ..."
+  for (const auto& [key, value] : config_.parameters) {
+    const auto dot = key.find('.');
+    if (dot == std::string::npos || dot == 0)
+      throw Error("parameter '" + key + "': expected Module.field");
+    const auto module = key.substr(0, dot);
+    if (!parameters_.count(module))
+      throw Error("parameter '" + key + "': no module '" + module + "' with parameters");
+    updates[module] += key.substr(dot + 1) + "=" + value + " ";
+  }
+  for (const auto& [module, text] : updates) parameters_.at(module)->update(text, module);
+
+  replan(config_.providers);
+  actuator_ = &slot_value<hal::ActuatorFrame>(
+      blackboard_slot("ActuatorFrame", typeid(hal::ActuatorFrame), &make_slot<hal::ActuatorFrame>));
+}
+
+Runtime::~Runtime() = default;
+
+Slot& Runtime::blackboard_slot(std::string_view name, std::type_index type,
+                               std::unique_ptr<Slot> (*make)()) {
+  if (auto it = by_name_.find(name); it != by_name_.end()) {
+    if (it->second->type() != type)
+      throw Error("representation '" + std::string(name) + "' is bound to two different C++ types");
+    return *it->second;
+  }
+  slots_.push_back(make());
+  by_name_.emplace(std::string(name), slots_.back().get());
+  return *slots_.back();
+}
+
+const Slot& Runtime::typed_slot(std::string_view name, std::type_index type) const {
+  const auto& s = representation_slot(std::string(name));
+  if (s.type() != type) throw Error("representation '" + std::string(name) + "' has another type");
+  return s;
+}
+
+const Slot& Runtime::representation_slot(const std::string& name) const {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) throw Error("no representation '" + name + "' on the blackboard");
+  return *it->second;
+}
+
+int Runtime::debug_request_index(std::string_view name) {
+  auto it = std::find(debug_names_.begin(), debug_names_.end(), name);
+  if (it != debug_names_.end()) return static_cast<int>(it - debug_names_.begin());
+  if (debug_names_.size() >= kMaxDebugRequests)
+    throw Error("debug request '" + std::string(name) + "': more than " +
+                std::to_string(kMaxDebugRequests) + " debug requests");
+  debug_names_.emplace_back(name);
+  return static_cast<int>(debug_names_.size()) - 1;
+}
+
+void Runtime::replan(const std::map<std::string, std::string>& chosen) {
+  auto plan = plan_modules(declarations_, chosen, kBuiltIn, {"ActuatorFrame"});
+  // Build what is new first, so a failing constructor leaves the running plan untouched.
+  std::vector<std::unique_ptr<ModuleEntry>> next(plan.order.size());
+  std::vector<std::size_t> reuse(plan.order.size(), modules_.size());
+  for (std::size_t i = 0; i < plan.order.size(); ++i) {
+    const auto& name = plan.order[i];
+    std::set<std::string> owns;
+    for (const auto& [rep, m] : plan.provider)
+      if (m == name) owns.insert(rep);
+    for (std::size_t k = 0; k < modules_.size(); ++k)
+      if (modules_[k]->name == name && modules_[k]->owns == owns) reuse[i] = k;
+    if (reuse[i] < modules_.size()) continue;
+    next[i] = std::make_unique<ModuleEntry>();
+    next[i]->name = name;
+    next[i]->owns = std::move(owns);
+    Context c(*this, name, next[i].get());
+    next[i]->module = (*registry_.find(name))(c);
+  }
+  for (std::size_t i = 0; i < next.size(); ++i)
+    if (!next[i]) next[i] = std::move(modules_[reuse[i]]);
+  modules_ = std::move(next);
+  plan_ = std::move(plan);
+  chosen_ = chosen;
+  order_ = plan_.order;
+  times_->modules = order_;
+  times_->ns.assign(order_.size(), 0);
+}
+
+bool Runtime::step() {
+  if (!link_.read(*sensor_)) return false;
+  frame_info_->time = sensor_->time;
+  frame_info_->frame = frame_counter_++;
+  frame_info_->period = link_.period();
+  using Clock = std::chrono::steady_clock;
+  auto before = Clock::now();
+  for (std::size_t i = 0; i < modules_.size(); ++i) {
+    modules_[i]->module->update();
+    const auto after = Clock::now();
+    times_->ns[i] = std::chrono::duration_cast<std::chrono::nanoseconds>(after - before).count();
+    before = after;
+  }
+  link_.write(*actuator_);
+  if (log_) log_->write_frame();
+  return true;
+}
+
+std::string Runtime::provider_of(const std::string& representation) const {
+  auto it = plan_.provider.find(representation);
+  return it == plan_.provider.end() ? std::string() : it->second;
+}
+
+std::vector<std::string> Runtime::providers_available(const std::string& representation) const {
+  std::vector<std::string> out;
+  for (const auto& d : declarations_)
+    if (std::find(d.provides.begin(), d.provides.end(), representation) != d.provides.end())
+      out.push_back(d.name);
+  return out;
+}
+
+void Runtime::swap_provider(const std::string& representation, const std::string& module) {
+  auto chosen = chosen_;
+  if (module == "default") {
+    auto it = config_.providers.find(representation);
+    if (it == config_.providers.end())
+      chosen.erase(representation);
+    else
+      chosen[representation] = it->second;
+  } else {
+    chosen[representation] = module;
+  }
+  replan(chosen);
+}
+
+void Runtime::set_parameters(const std::string& module, std::string_view text) {
+  auto it = parameters_.find(module);
+  if (it == parameters_.end()) throw Error("no module '" + module + "' with parameters");
+  it->second->update(text, module);
+}
+
+std::string Runtime::get(std::string_view key) const {
+  const auto k = split_key(key);
+  if (k.representation) return representation_slot(k.name).text_at(k.path, k.name);
+  auto it = parameters_.find(k.name);
+  if (it == parameters_.end()) throw Error("no module '" + k.name + "' with parameters");
+  return it->second->text_at(k.path, k.name);
+}
+
+void Runtime::set(std::string_view key, std::string_view text) {
+  const auto k = split_key(key);
+  const std::string update = k.path.empty() ? std::string(text) : k.path + "=" + std::string(text);
+  if (!k.representation) return set_parameters(k.name, update);
+  auto it = by_name_.find(k.name);
+  if (it == by_name_.end()) throw Error("no representation '" + k.name + "' on the blackboard");
+  it->second->update(update, k.name);
+}
+
+const TypeDesc& Runtime::type_of(std::string_view key) const {
+  const auto k = split_key(key);
+  const Slot* s = nullptr;
+  if (k.representation)
+    s = &representation_slot(k.name);
+  else if (auto it = parameters_.find(k.name); it != parameters_.end())
+    s = it->second.get();
+  else
+    throw Error("no module '" + k.name + "' with parameters");
+  if (k.path.empty()) return s->desc();
+  const auto v = s->value();
+  return *value_at(s->desc(), v, k.path, k.name).first;
+}
+
+std::vector<std::string> Runtime::representation_names() const {
+  std::vector<std::string> out;
+  for (const auto& s : slots_) out.push_back(s->desc().name);
+  return out;
+}
+
+std::vector<std::string> Runtime::parameter_modules() const {
+  std::vector<std::string> out;
+  for (const auto& [name, slot] : parameters_) out.push_back(name);
+  return out;
+}
+
+std::vector<std::pair<std::string, bool>> Runtime::debug_requests() const {
+  std::vector<std::pair<std::string, bool>> out;
+  for (std::size_t i = 0; i < debug_names_.size(); ++i)
+    out.emplace_back(debug_names_[i], debug_bits_.test(i));
+  return out;
+}
+
+void Runtime::set_debug_request(const std::string& name, bool on) {
+  auto it = std::find(debug_names_.begin(), debug_names_.end(), name);
+  if (it == debug_names_.end()) throw Error("no debug request '" + name + "'");
+  debug_bits_.set(it - debug_names_.begin(), on);
+}
+
+void Runtime::start_log(const std::string& path) {
+  std::vector<std::pair<std::string, const Slot*>> slots;
+  for (const auto& s : slots_) slots.emplace_back(s->desc().name, s.get());
+  log_ = std::make_unique<LogWriter>(path, std::move(slots));
+}
+
+void Runtime::stop_log() {
+  log_.reset();
+}
+
+std::vector<std::string> Runtime::load_frame(const LogReader& log, std::size_t frame) {
+  std::vector<std::string> skipped;
+  for (std::size_t i = 0; i < log.types().size(); ++i) {
+    const auto& t = log.types()[i];
+    auto it = by_name_.find(t.name);
+    if (it == by_name_.end() || !same_type(it->second->desc(), *t.desc)) {
+      skipped.push_back(t.name);
+      continue;
+    }
+    it->second->decode(log.bytes(frame, static_cast<int>(i)));
+  }
+  return skipped;
+}
+
+}  // namespace stride

@@ -1,0 +1,106 @@
+#pragma once
+// The robot's frame loop: owns the representations (blackboard), the planned modules and the
+// hardware link. One step():
+//   link.read(SensorFrame) -> FrameInfo -> modules in dependency order -> ActuatorFrame ->
+//   link.write
+// SensorFrame, FrameInfo and ModuleTimes are written by the Runtime; ActuatorFrame must be
+// provided by a module (e.g. ActuatorConversion from JointRequest).
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "robot/framework/module_registry.hpp"
+#include "robot/framework/plan.hpp"
+#include "robot/hal/hardware_link.hpp"
+#include "robot/representations/frame_info.hpp"
+#include "robot/representations/hal_reflection.hpp"
+#include "robot/runtime/log.hpp"
+#include "robot/runtime/runtime_config.hpp"
+
+namespace stride {
+
+class Runtime {
+ public:
+  // Instantiates every registered module once to learn its declarations, applies the configured
+  // parameters, then plans. Throws stride::Error on any configuration error.
+  Runtime(const ModuleRegistry& registry, RuntimeConfig config, hal::HardwareLink& link);
+  ~Runtime();
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
+
+  // One frame. False (and nothing run) when the link reports it is lost.
+  bool step();
+
+  const std::vector<std::string>& module_order() const { return order_; }
+  std::string provider_of(const std::string& representation) const;  // "" for built-ins
+  std::vector<std::string> providers_available(const std::string& representation) const;
+  // Chooses `module` (or "default": the configured choice) for `representation` and re-plans
+  // between frames; module state is kept where a module's role did not change.
+  void swap_provider(const std::string& representation, const std::string& module);
+
+  // Parameters as text, e.g. set_parameters("Stand", "knee_pitch=0.5 hip_pitch=-0.2").
+  void set_parameters(const std::string& module, std::string_view text);
+
+  // Console keys: "representation:<Name>[.path]" and "module:<Name>[.path]" (parameters).
+  std::string get(std::string_view key) const;
+  void set(std::string_view key, std::string_view text);
+  const TypeDesc& type_of(std::string_view key) const;
+  std::vector<std::string> representation_names() const;  // blackboard order
+  std::vector<std::string> parameter_modules() const;
+
+  // Debug requests: named switches modules register and test with DebugRequest::on().
+  std::vector<std::pair<std::string, bool>> debug_requests() const;
+  void set_debug_request(const std::string& name, bool on);
+
+  // Logs every representation on the blackboard every frame (see log.hpp).
+  void start_log(const std::string& path);
+  void stop_log();
+  bool logging() const { return log_ != nullptr; }
+  // Puts frame `frame` of a log onto the blackboard (for `log goto`); returns the names skipped
+  // because they are not on this blackboard or have another type.
+  std::vector<std::string> load_frame(const LogReader& log, std::size_t frame);
+
+  template <class T>
+  const T& representation() const {
+    return slot_value<T>(typed_slot(Reflect<T>::type_name(), typeid(T)));
+  }
+  const Slot& representation_slot(const std::string& name) const;
+
+ private:
+  class Context;
+  struct ModuleEntry;
+  friend class Context;
+
+  Slot& blackboard_slot(std::string_view name, std::type_index type,
+                        std::unique_ptr<Slot> (*make)());
+  const Slot& typed_slot(std::string_view name, std::type_index type) const;
+  Slot& parameter_slot(const std::string& module);
+  int debug_request_index(std::string_view name);
+  void replan(const std::map<std::string, std::string>& chosen);
+
+  const ModuleRegistry& registry_;
+  RuntimeConfig config_;
+  hal::HardwareLink& link_;
+
+  std::vector<std::unique_ptr<Slot>> slots_;  // blackboard, creation order
+  std::map<std::string, Slot*, std::less<>> by_name_;
+  std::map<std::string, std::unique_ptr<Slot>, std::less<>> parameters_;  // module -> parameters
+  std::vector<ModuleDeclaration> declarations_;
+  std::map<std::string, std::string> chosen_;  // current provider choices
+  ModulePlan plan_;
+  std::vector<std::unique_ptr<ModuleEntry>> modules_;
+  std::vector<std::string> order_;
+
+  std::vector<std::string> debug_names_;
+  DebugRequestBits debug_bits_;
+
+  hal::SensorFrame* sensor_ = nullptr;
+  FrameInfo* frame_info_ = nullptr;
+  ModuleTimes* times_ = nullptr;
+  hal::ActuatorFrame* actuator_ = nullptr;
+  std::int64_t frame_counter_ = 0;
+  std::unique_ptr<LogWriter> log_;
+};
+
+}  // namespace stride
