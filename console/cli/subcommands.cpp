@@ -6,11 +6,22 @@ namespace stride::cli {
 
 // Each subcommand lives in its own file; declare it here and add one line to the table.
 int run_main(Args args, std::ostream& out, std::ostream& err);
+int balance_main(Args args, std::ostream& out, std::ostream& err);
+int kin_main(Args args, std::ostream& out, std::ostream& err);
+int dyn_main(Args args, std::ostream& out, std::ostream& err);
+int pattern_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
+      {"balance", "balance classify|ankle-boundaries|closed-loop|hip|combined|lqr [--x0 m --v0 m/s ...] [--json] [--csv f] [--plots dir]: Ch. 7 balance analysis", balance_main},
       {"run", "run <scene> --seconds S [--seed N] [--report out.json]: headless simulation",
        run_main},
+      {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics", kin_main},
+      {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)", dyn_main},
+      {"pattern",
+       "pattern [--preset P] [--set name=value ...] [--conventional] --csv out.csv [--plots dir]: "
+       "walking pattern (Ch. 3) offline",
+       pattern_main},
   };
   return table;
 }
