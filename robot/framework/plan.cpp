@@ -74,6 +74,14 @@ ModulePlan plan_modules(const std::vector<ModuleDeclaration>& modules,
     }
   }
 
+  // Outputs nobody asked for go to the blackboard too when exactly one running module makes them.
+  std::map<std::string, std::vector<std::string>> extra;
+  for (const auto& m : selected)
+    for (const auto& rep : by_name[m]->provides)
+      if (!plan.provider.count(rep) && !built_in.count(rep)) extra[rep].push_back(m);
+  for (const auto& [rep, makers] : extra)
+    if (makers.size() == 1) plan.provider[rep] = makers.front();
+
   // Kahn's algorithm; ties broken by name so the order is reproducible.
   std::map<std::string, std::set<std::string>> after;  // module -> modules that need its output
   std::map<std::string, int> in_degree;

@@ -21,6 +21,8 @@ struct ModulePlan {
 // Every representation in `roots` and in `chosen` gets a provider, then every requirement of a
 // chosen provider, transitively; `built_in` representations are written by the runtime itself.
 // `chosen` maps representation -> module; otherwise the only module providing it is used.
+// A running module's other outputs are also assigned to it when no other running module makes
+// them (otherwise they stay private to each module and off the blackboard).
 // Errors (exact text, tested):
 //   no provider for representation 'X' (required by A, B)
 //   representation 'X' has several providers (A, B); choose one in the configuration
