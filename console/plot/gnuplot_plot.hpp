@@ -1,0 +1,64 @@
+#pragma once
+// Write a numeric table as CSV and render columns of it to PNG with gnuplot (`gnuplot` binary,
+// Debian gnuplot-nox). Reusable for any figure: one CSV, one x column, any number of y series.
+//
+//   plot::Table t{{"t", "x", "zmp"}};
+//   t.add_row({0.0, 0.01, 0.0});
+//   plot::write_csv("out/com.csv", t);
+//   plot::PlotSpec spec{.csv_path = "out/com.csv", .x_column = "t",
+//                       .series = {{"x", "CoM x"}, {"zmp", "ZMP"}},
+//                       .title = "CoM", .x_label = "t [s]", .y_label = "[m]",
+//                       .png_path = "out/com.png"};
+//   plot::render_png(spec);  // also leaves out/com.gp, the script, for tweaking by hand
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stride::plot {
+
+// Named numeric columns; non-finite values are written as NaN and left out of plots.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  void add_row(std::vector<double> row);  // throws stride::Error if the width is wrong
+};
+
+// CSV with one header line; full double precision. Throws stride::Error naming the path.
+void write_csv(const std::string& path, const Table& table);
+
+// One curve: y column, legend label (column name if empty), and optionally its own x column
+// (for phase-plane plots where each curve has its own x).
+struct Series {
+  std::string column;
+  std::string label;
+  std::string x_column;
+};
+
+struct PlotSpec {
+  std::string csv_path;
+  std::string x_column;
+  std::vector<Series> series;
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  std::string png_path;
+  int width = 900;
+  int height = 600;
+  std::string style = "lines";  // gnuplot style: lines, points, linespoints
+  std::string x_range;          // gnuplot range such as "[-0.3:0.3]"; empty = automatic
+  std::string y_range;
+};
+
+// The PNG terminal this machine's gnuplot offers ("pngcairo" preferred, else "png"); empty if
+// gnuplot is not installed.
+std::string png_terminal();
+
+// The gnuplot script for spec, given the CSV header columns (exposed for tests and debugging).
+std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>& csv_columns,
+                           std::string_view terminal);
+
+// Reads the CSV header, writes <png without .png>.gp and runs gnuplot on it. Throws
+// stride::Error when gnuplot is missing, a column is unknown, or gnuplot fails.
+void render_png(const PlotSpec& spec);
+
+}  // namespace stride::plot
