@@ -360,7 +360,8 @@ Report run_command(const Options& o) {
         combined);
     const std::string fig = combined ? "fig7_11" : "fig7_9";
     const std::string tag = combined ? " (Fig. 7.11)" : " (Fig. 7.9)";
-    rep.figures.push_back({fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, false, {}});
+    rep.figures.push_back(
+        {fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, false, {}, "", "[-0.4:0.4]"});
     rep.figures.push_back(
         {fig + "_hip_angle", "Hip angle" + tag, "t [s]", "theta [rad]", {"theta"}, false, {}});
     rep.figures.push_back({fig + "_hip_rate",
