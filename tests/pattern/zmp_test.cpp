@@ -1,0 +1,96 @@
+// ZMP of the point-mass pattern (Eq. 3.16) against closed forms and the NAO support polygon.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "behaviours/walking/pattern/point_mass_zmp.hpp"
+#include "behaviours/walking/pattern/support_polygon.hpp"
+#include "behaviours/walking/pattern/walking_pattern.hpp"
+#include "robot/nao/nao_dimensions.hpp"
+
+namespace stride::walking {
+namespace {
+
+// Eq. 3.16 at the middle of a rhythmic single support: y = +-A_l, y'' = -omega^2 y, x'' = 0,
+// z = z_max, z'' = -A_s (pi / T_s)^2.
+double mid_support_zmp_y(const PatternParameters& p) {
+  const double A_s = 0.5 * (p.z_max - p.z_min), k = std::numbers::pi / p.T_s();
+  return p.A_l * (1.0 + p.omega() * p.omega() * p.z_max / (p.gravity - A_s * k * k));
+}
+
+TEST(PointMassZmp, StandingMassHasItsZmpBelowIt) {
+  const Eigen::Vector2d z = point_mass_zmp({0.1, -0.2, 0.3}, Eigen::Vector3d::Zero(), 9.81);
+  EXPECT_DOUBLE_EQ(z.x(), 0.1);
+  EXPECT_DOUBLE_EQ(z.y(), -0.2);
+  // A horizontal acceleration shifts it back by z a / g (the cart-table / LIPM relation).
+  EXPECT_NEAR(point_mass_zmp({0, 0, 0.3}, {1.0, 0, 0}, 9.81).x(), -0.3 / 9.81, 1e-15);
+}
+
+TEST(PointMassZmp, MatchesTheClosedFormAtRhythmicBoundaries) {
+  for (const char* name : {"medium", "fig3.16"}) {
+    const StretchedKneePattern w(preset(name));
+    const PatternParameters& p = w.parameters();
+    for (int j = p.development_steps() + 1; j < p.steps - p.decay_steps(); ++j) {
+      const PatternSample s = w.sample(j * p.T_step());
+      const double side = (j % 2 == 1) ? 1.0 : -1.0;  // over the left foot at odd j
+      EXPECT_NEAR(s.zmp.y(), side * mid_support_zmp_y(p), 1e-12) << name << " j = " << j;
+      EXPECT_NEAR(s.zmp.x(), s.waist.x(), 1e-12) << name << " j = " << j;
+    }
+  }
+}
+
+TEST(SupportPolygon, SoleRectangleAndHullOfBothSoles) {
+  const Polygon left = sole_corners(Foot::kLeft, {0, 0.05, 0});
+  EXPECT_NEAR(inside_margin(left, {0.02, 0.0556}), 0.0455, 1e-12);  // centre: half the width
+  EXPECT_NEAR(inside_margin(left, {0.02, 0.0}), -0.0101, 1e-12);    // inner edge at y = 0.0101
+  PatternSample s;
+  s.left_foot = {0, 0.05, 0};
+  s.right_foot = {0.05, -0.05, 0};
+  const Polygon hull = support_polygon(s);
+  EXPECT_EQ(hull.size(), 6u);  // two corners of each sole are hidden inside the hull
+  EXPECT_GT(inside_margin(hull, {0.03, 0.0}), 0.0);
+  EXPECT_LT(inside_margin(hull, {0.14, 0.06}), 0.0);  // ahead of the rear-left sole
+  s.support = SupportPhase::kRight;
+  EXPECT_LT(inside_margin(support_polygon(s), {0.03, 0.0}), 0.0);
+}
+
+// Fig. 3.16's sway (A_l = 0.025 m, T_stride = 1.16 s) carries the ZMP onto the support sole.
+TEST(ZmpInSupportPolygon, Fig3_16PatternKeepsTheZmpOnTheSoles) {
+  const StretchedKneePattern w(preset("fig3.16"));
+  const PatternParameters& p = w.parameters();
+  EXPECT_NEAR(mid_support_zmp_y(p), p.d_0, 0.002);  // ZMP peaks under the ankle
+  for (const PatternSample& s : sample_walk(w, 0.005)) {
+    const Polygon both = convex_hull([&] {
+      Polygon v = sole_corners(Foot::kLeft, s.left_foot);
+      const Polygon r = sole_corners(Foot::kRight, s.right_foot);
+      v.insert(v.end(), r.begin(), r.end());
+      return v;
+    }());
+    EXPECT_GE(inside_margin(both, s.zmp), 0.0) << "t = " << s.t;
+    // The half-length first and last swings are excepted: there the cubic of Eq. 3.7 crosses
+    // the walking line before the swing foot lands.
+    if (s.t > p.T_s() && s.t < w.duration() - p.T_s())
+      EXPECT_GE(inside_margin(support_polygon(s), s.zmp), 0.0) << "t = " << s.t;
+  }
+}
+
+// Table 4.3's 1 mm (0.5 mm fast) sway keeps the point-mass ZMP between the soles: the robot's
+// own lateral oscillation is relied on (Sec. 4.3.4.2), so only the double-support hull holds.
+TEST(ZmpInSupportPolygon, Table4_3PatternsKeepTheZmpBetweenTheSoles) {
+  for (const char* name : {"slow", "medium", "fast"}) {
+    const StretchedKneePattern w(preset(name));
+    const PatternParameters& p = w.parameters();
+    const double inner_edge = p.d_0 - (0.5 * nao::kSoleWidth - nao::kSoleCentreYLeft);
+    EXPECT_LT(mid_support_zmp_y(p), inner_edge) << name;
+    for (const PatternSample& s : sample_walk(w, 0.005)) {
+      PatternSample both = s;
+      both.support = SupportPhase::kDouble;
+      EXPECT_GE(inside_margin(support_polygon(both), s.zmp), 0.0) << name << " t = " << s.t;
+      EXPECT_LT(std::abs(s.zmp.y()), inner_edge) << name << " t = " << s.t;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace stride::walking
