@@ -1,0 +1,229 @@
+// `stride kin fk|ik|com ...`: NAO forward/inverse kinematics and centre of mass from the shell.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "console/cli/subcommand.hpp"
+#include "robot/core/error.hpp"
+#include "robot/model/kinematics/dls_ik.hpp"
+#include "robot/model/kinematics/nao_fk.hpp"
+#include "robot/model/kinematics/nao_joint_map.hpp"
+#include "robot/model/kinematics/nao_leg_ik.hpp"
+#include "robot/model/urdf_loader.hpp"
+#include "robot/nao/nao_dimensions.hpp"
+
+namespace stride::cli {
+namespace {
+
+using namespace stride::model;
+
+constexpr const char* kUsage =
+    "usage: stride kin fk --chain head|larm|rarm|lleg|rleg --q \"angles\" [--json]\n"
+    "       stride kin ik --chain <chain> --pose \"x y z roll pitch yaw\" [--json]\n"
+    "       stride kin com --q \"25 angles (LoLA order)\" | \"Name=value ...\" [--urdf file] "
+    "[--json]";
+
+struct UsageError : Error {
+  using Error::Error;
+};
+
+// --name value pairs after the verb; every option must be known and appear once.
+std::map<std::string, std::string> options(Args args, std::initializer_list<const char*> known) {
+  std::map<std::string, std::string> out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    bool ok = false;
+    for (const char* k : known) ok |= a == k;
+    if (!ok) throw UsageError("stride kin: " + a + ": unknown argument");
+    if (a == "--json") {
+      out[a] = "1";
+      continue;
+    }
+    if (i + 1 >= args.size()) throw UsageError("stride kin: " + a + ": expected a value");
+    out[a] = args[++i];
+  }
+  return out;
+}
+
+std::string required(const std::map<std::string, std::string>& o, const std::string& name) {
+  auto it = o.find(name);
+  if (it == o.end()) throw UsageError("stride kin: " + name + ": missing");
+  return it->second;
+}
+
+std::vector<double> numbers(const std::string& text, const std::string& name, size_t expected) {
+  std::istringstream in(text);
+  std::vector<double> v;
+  std::string word;
+  while (in >> word) {
+    size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(word, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != word.size() || !std::isfinite(x))
+      throw UsageError("stride kin: " + name + ": '" + word + "' is not a number");
+    v.push_back(x);
+  }
+  if (v.size() != expected)
+    throw UsageError("stride kin: " + name + ": expected " + std::to_string(expected) +
+                     " numbers, got " + std::to_string(v.size()));
+  return v;
+}
+
+NaoChain chain_option(const std::map<std::string, std::string>& o) {
+  const std::string name = required(o, "--chain");
+  const auto c = chain_from_name(name);
+  if (!c)
+    throw UsageError("stride kin: --chain: '" + name + "' is not head, larm, rarm, lleg or rleg");
+  return *c;
+}
+
+Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& r) {  // R = Rz(yaw) Ry(pitch) Rx(roll)
+  return {std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+          std::atan2(r(1, 0), r(0, 0))};
+}
+
+Eigen::Isometry3d pose_from(const std::vector<double>& p) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+  t.linear() = (Eigen::AngleAxisd(p[5], Eigen::Vector3d::UnitZ()) *
+                Eigen::AngleAxisd(p[4], Eigen::Vector3d::UnitY()) *
+                Eigen::AngleAxisd(p[3], Eigen::Vector3d::UnitX()))
+                   .toRotationMatrix();
+  return t;
+}
+
+void print_pose(std::ostream& out, const Eigen::Isometry3d& t, bool json) {
+  const Eigen::Vector3d p = t.translation(), r = roll_pitch_yaw(t.linear());
+  if (json) {
+    out << "{\"position\": [" << p.x() << ", " << p.y() << ", " << p.z() << "], \"rpy\": [" << r.x()
+        << ", " << r.y() << ", " << r.z() << "]}\n";
+  } else {
+    out << "position (m):      " << p.x() << " " << p.y() << " " << p.z() << "\n"
+        << "roll pitch yaw:    " << r.x() << " " << r.y() << " " << r.z() << "\n";
+  }
+}
+
+std::string default_urdf() {
+  return "scenes/robots/nao/nao.urdf";
+}
+
+int fk(Args args, std::ostream& out) {
+  const auto o = options(args, {"--chain", "--q", "--json"});
+  const NaoChain c = chain_option(o);
+  const auto q = numbers(required(o, "--q"), "--q", chain_joints(c).size());
+  print_pose(out, chain_fk(c, q), o.count("--json"));
+  return 0;
+}
+
+int ik(Args args, std::ostream& out) {
+  const auto o = options(args, {"--chain", "--pose", "--urdf", "--json"});
+  const NaoChain c = chain_option(o);
+  const Eigen::Isometry3d target = pose_from(numbers(required(o, "--pose"), "--pose", 6));
+  const auto ids = chain_joints(c);
+  std::vector<double> q(ids.size());
+  bool reachable = true;
+  double residual = 0;
+  if (c == NaoChain::LLeg || c == NaoChain::RLeg) {
+    const LegIkResult r = leg_ik(c == NaoChain::LLeg ? Side::Left : Side::Right, target);
+    std::copy(r.q.begin(), r.q.end(), q.begin());
+    reachable = r.reachable;
+    residual = r.position_error;
+  } else {  // arms and head: damped least squares on the URDF, end effector as chain_fk's
+    const RobotModel m = load_urdf(o.count("--urdf") ? o.at("--urdf") : default_urdf());
+    const NaoJointMap map = make_nao_joint_map(m);
+    const char* link = c == NaoChain::Head ? "Head" : c == NaoChain::LArm ? "LHand" : "RHand";
+    const Eigen::Vector3d point =
+        c == NaoChain::Head ? Eigen::Vector3d::Zero() : Eigen::Vector3d(nao::kHandOffsetX, 0, 0);
+    JointVector jq = zero_joints(m);
+    DlsIkWorkspace work;
+    DlsIkOptions opt;
+    opt.damping = 1e-2;
+    const DlsIkResult r = dls_ik(m, m.link_index(link), target, jq, work, opt, point);
+    for (size_t i = 0; i < ids.size(); ++i) q[i] = jq[map.model_index[hal::index(ids[i])]];
+    reachable = r.converged;
+    residual = r.error;
+  }
+  const bool json = o.count("--json");
+  if (json)
+    out << "{\"reachable\": " << (reachable ? "true" : "false") << ", \"residual\": " << residual
+        << ", \"q\": {";
+  for (size_t i = 0; i < ids.size(); ++i) {
+    if (json)
+      out << (i ? ", " : "") << "\"" << hal::name(ids[i]) << "\": " << q[i];
+    else
+      out << std::left << std::setw(16) << hal::name(ids[i]) << q[i] << "\n";
+  }
+  if (json)
+    out << "}}\n";
+  else
+    out << "reachable: " << (reachable ? "yes" : "no") << " (residual " << residual << ")\n";
+  return 0;
+}
+
+int com(Args args, std::ostream& out) {
+  const auto o = options(args, {"--q", "--urdf", "--json"});
+  const std::string text = required(o, "--q");
+  std::array<double, hal::kNumJoints> lola{};
+  if (text.find('=') != std::string::npos) {
+    std::istringstream in(text);
+    std::string pair;
+    while (in >> pair) {
+      const auto eq = pair.find('=');
+      const auto id =
+          eq == std::string::npos ? std::nullopt : hal::joint_from_name(pair.substr(0, eq));
+      if (!id) throw UsageError("stride kin: --q: '" + pair + "' is not JointName=value");
+      lola[hal::index(*id)] = numbers(pair.substr(eq + 1), "--q " + pair.substr(0, eq), 1)[0];
+    }
+  } else {
+    const auto v = numbers(text, "--q", hal::kNumJoints);
+    std::copy(v.begin(), v.end(), lola.begin());
+  }
+  const RobotModel m = load_urdf(o.count("--urdf") ? o.at("--urdf") : default_urdf());
+  JointVector q;
+  joints_from_lola(m, make_nao_joint_map(m), lola, q);
+  std::vector<Eigen::Isometry3d> poses;
+  link_poses(m, q, poses);
+  const Eigen::Vector3d c = centre_of_mass(m, poses);
+  if (o.count("--json"))
+    out << "{\"com\": [" << c.x() << ", " << c.y() << ", " << c.z()
+        << "], \"mass\": " << m.total_mass() << "}\n";
+  else
+    out << "centre of mass (m, torso frame): " << c.x() << " " << c.y() << " " << c.z()
+        << "\ntotal mass (kg): " << m.total_mass() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int kin_main(Args args, std::ostream& out, std::ostream& err) {
+  try {
+    if (args.empty()) throw UsageError("stride kin: expected fk, ik or com");
+    if (args[0] == "--help") {
+      out << kUsage << "\n";
+      return 0;
+    }
+    const std::string verb = args[0];
+    const Args rest = args.subspan(1);
+    out << std::setprecision(9);
+    if (verb == "fk") return fk(rest, out);
+    if (verb == "ik") return ik(rest, out);
+    if (verb == "com") return com(rest, out);
+    throw UsageError("stride kin: '" + verb + "': expected fk, ik or com");
+  } catch (const UsageError& e) {
+    err << e.what() << "\n";
+    return 2;
+  } catch (const Error& e) {
+    err << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace stride::cli

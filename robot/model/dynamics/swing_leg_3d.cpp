@@ -1,0 +1,199 @@
+#include "robot/model/dynamics/swing_leg_3d.hpp"
+
+#include <array>
+
+#include <Eigen/Cholesky>
+
+#include <Eigen/Cholesky>
+
+#include "robot/model/dynamics/dual.hpp"
+
+namespace stride::model {
+namespace {
+
+// The three CoM lines of Eqs. C.16-C.20 are sums of lengths times unit directions u1 (thigh),
+// u2 (tibia), u3 (foot); U[k] = du_k/dq (3 x 5). With them the kinetic energy is
+//   K = 1/2 q'^T [ (J1+J3+J5) U1'U1 + (J2+J6) U2'U2 + J4 U3'U3 + J9 (U1'U2 + U2'U1)
+//                + J7 (U1'U3 + U3'U1) + J8 (U2'U3 + U3'U2) + rotational terms ] q'
+// and P = J15 u1z + J16 u2z + J17 u3z: every term is one parameter times a matrix of q.
+template <typename T>
+using Dir = std::array<std::array<T, 5>, 3>;  // 3 x 5 direction Jacobian
+
+template <typename T>
+using Basis = std::array<std::array<std::array<T, 5>, 5>, 17>;  // H = sum_k a_k Basis[k]
+
+template <typename T>
+void directions(const std::array<T, 5>& q, Dir<T>& u1, Dir<T>& u2, Dir<T>& u3,
+                std::array<T, 3>& uz) {
+  using std::cos, std::sin;
+  const T a1 = q[0], t1 = q[1], t12 = q[1] + q[2], t123 = q[1] + q[2] + q[3], a12 = q[0] + q[4];
+  const T ca1 = cos(a1), sa1 = sin(a1), ca12 = cos(a12), sa12 = sin(a12);
+  for (auto* u : {&u1, &u2, &u3})
+    for (auto& row : *u) row.fill(T(0));
+  // u = (ca st, sa, -ca ct): du/d(roll) and du/d(pitch) for the joints the link hangs on.
+  const auto roll = [](Dir<T>& u, int col, const T& ca, const T& sa, const T& t) {
+    u[0][col] = -sa * sin(t);
+    u[1][col] = ca;
+    u[2][col] = sa * cos(t);
+  };
+  const auto pitch = [](Dir<T>& u, int col, const T& ca, const T& t) {
+    u[0][col] = ca * cos(t);
+    u[2][col] = ca * sin(t);
+  };
+  roll(u1, 0, ca1, sa1, t1);
+  pitch(u1, 1, ca1, t1);
+  roll(u2, 0, ca1, sa1, t12);
+  for (int c : {1, 2}) pitch(u2, c, ca1, t12);
+  for (int c : {0, 4}) roll(u3, c, ca12, sa12, t123);
+  for (int c : {1, 2, 3}) pitch(u3, c, ca12, t123);
+  uz = {-ca1 * cos(t1), -ca1 * cos(t12), -ca12 * cos(t123)};
+}
+
+template <typename T>
+void basis(const std::array<T, 5>& q, Basis<T>& b) {
+  Dir<T> u1, u2, u3;
+  std::array<T, 3> uz;
+  directions(q, u1, u2, u3, uz);
+  for (auto& m : b)
+    for (auto& row : m) row.fill(T(0));
+  const auto add_product = [&](int k, const Dir<T>& x, const Dir<T>& y, bool symmetrise) {
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        T s = x[0][i] * y[0][j] + x[1][i] * y[1][j] + x[2][i] * y[2][j];
+        if (symmetrise) s += y[0][i] * x[0][j] + y[1][i] * x[1][j] + y[2][i] * x[2][j];
+        b[k][i][j] += s;
+      }
+  };
+  for (int k : {0, 2, 4}) add_product(k, u1, u1, false);  // J1, J3, J5
+  for (int k : {1, 5}) add_product(k, u2, u2, false);     // J2, J6
+  add_product(3, u3, u3, false);                          // J4
+  add_product(6, u1, u3, true);                           // J7
+  add_product(7, u2, u3, true);                           // J8
+  add_product(8, u1, u2, true);                           // J9
+  // Rotational terms of Eq. C.22: angular rates are sums of joint rates.
+  const auto add_rate = [&](int k, std::initializer_list<int> joints) {
+    for (int i : joints)
+      for (int j : joints) b[k][i][j] += T(1);
+  };
+  add_rate(9, {0});         // J10 = Ixx1 + Ixx2: a1'
+  add_rate(10, {0, 4});     // J11 = Ixx3: a1' + a2'
+  add_rate(11, {1});        // J12 = Iyy1: t1'
+  add_rate(12, {1, 2});     // J13 = Iyy2: t1' + t2'
+  add_rate(13, {1, 2, 3});  // J14 = Iyy3: t1' + t2' + t3'
+}
+
+// Gravity basis: d(u_kz)/dq for J15..J17.
+void gravity_basis(const Vector5d& q, std::array<Vector5d, 3>& g) {
+  std::array<double, 5> qa;
+  for (int i = 0; i < 5; ++i) qa[i] = q[i];
+  Dir<double> u1, u2, u3;
+  std::array<double, 3> uz;
+  directions(qa, u1, u2, u3, uz);
+  const Dir<double>* u[3] = {&u1, &u2, &u3};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 5; ++i) g[k][i] = (*u[k])[2][i];
+}
+
+struct BasisWithDerivatives {
+  Basis<double> h;
+  std::array<Basis<double>, 5> dh;  // dh[i] = d(basis)/dq_i
+};
+
+void basis_with_derivatives(const Vector5d& q, BasisWithDerivatives& out) {
+  Basis<Dual> b;
+  for (int i = 0; i < 5; ++i) {
+    std::array<Dual, 5> qd;
+    for (int j = 0; j < 5; ++j) qd[j] = Dual(q[j], i == j ? 1.0 : 0.0);
+    basis(qd, b);
+    for (int k = 0; k < 17; ++k)
+      for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 5; ++c) {
+          out.dh[i][k][r][c] = b[k][r][c].d;
+          if (i == 0) out.h[k][r][c] = b[k][r][c].v;
+        }
+  }
+}
+
+// Eq. C.14: C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i, for basis matrix m.
+Matrix5d christoffel(const std::array<Basis<double>, 5>& dh, int m, const Vector5d& qd) {
+  Matrix5d c = Matrix5d::Zero();
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i)
+        c(k, j) += 0.5 * (dh[i][m][k][j] + dh[j][m][k][i] - dh[k][m][i][j]) * qd[i];
+  return c;
+}
+
+Matrix5d to_matrix(const std::array<std::array<double, 5>, 5>& b) {
+  Matrix5d m;
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 5; ++c) m(r, c) = b[r][c];
+  return m;
+}
+
+}  // namespace
+
+Leg3dData thesis_3d_leg() {
+  return {0.3897,        0.2914,        0.1618,        0.00163671962, 0.00118207967,
+          0.00026944182, 0.00159107278, 0.00112865226, 0.00064434250, 0.1,
+          0.1029,        0.04519,       0.0538,        0.0496,        0.0413};
+}
+
+Vector17d leg3d_parameters(const Leg3dData& d) {
+  Vector17d a;
+  a << d.m1 * d.b1 * d.b1, d.m2 * d.b2 * d.b2, d.m2 * d.l1 * d.l1,  // J1..J3
+      d.m3 * d.b3 * d.b3, d.m3 * d.l1 * d.l1, d.m3 * d.l2 * d.l2,   // J4..J6
+      d.m3 * d.b3 * d.l1, d.m3 * d.b3 * d.l2,                       // J7, J8
+      d.m2 * d.l1 * d.b2 + d.m3 * d.l1 * d.l2,                      // J9
+      d.ixx1 + d.ixx2, d.ixx3, d.iyy1, d.iyy2, d.iyy3,              // J10..J14
+      (d.m1 * d.b1 + d.m2 * d.l1 + d.m3 * d.l1) * d.gravity,        // J15
+      (d.m2 * d.b2 + d.m3 * d.l2) * d.gravity,                      // J16
+      d.m3 * d.b3 * d.gravity;                                      // J17
+  return a;
+}
+
+Leg3dTerms leg3d_terms(const Vector5d& q, const Vector5d& qd, const Vector17d& a) {
+  BasisWithDerivatives b;
+  basis_with_derivatives(q, b);
+  std::array<Vector5d, 3> g;
+  gravity_basis(q, g);
+  Leg3dTerms t{Matrix5d::Zero(), Matrix5d::Zero(), Vector5d::Zero()};
+  for (int k = 0; k < 14; ++k) {
+    if (a[k] == 0) continue;
+    t.inertia += a[k] * to_matrix(b.h[k]);
+    t.coriolis += a[k] * christoffel(b.dh, k, qd);
+  }
+  for (int k = 0; k < 3; ++k) t.gravity += a[14 + k] * g[k];
+  return t;
+}
+
+Leg3dRegressor leg3d_regressor(const Vector5d& q, const Vector5d& qd, const Vector5d& qd_r,
+                               const Vector5d& qdd_r) {
+  BasisWithDerivatives b;
+  basis_with_derivatives(q, b);
+  std::array<Vector5d, 3> g;
+  gravity_basis(q, g);
+  Leg3dRegressor y;
+  for (int k = 0; k < 14; ++k)
+    y.col(k) = to_matrix(b.h[k]) * qdd_r + christoffel(b.dh, k, qd) * qd_r;
+  for (int k = 0; k < 3; ++k) y.col(14 + k) = g[k];
+  return y;
+}
+
+Vector5d leg3d_forward_dynamics(const Vector5d& q, const Vector5d& qd, const Vector5d& tau,
+                                const Vector17d& a) {
+  const Leg3dTerms t = leg3d_terms(q, qd, a);
+  return t.inertia.llt().solve(tau - t.coriolis * qd - t.gravity);
+}
+
+double leg3d_energy(const Vector5d& q, const Vector5d& qd, const Vector17d& a) {
+  const Leg3dTerms t = leg3d_terms(q, Vector5d::Zero(), a);
+  std::array<double, 5> qa;
+  for (int i = 0; i < 5; ++i) qa[i] = q[i];
+  Dir<double> u1, u2, u3;
+  std::array<double, 3> uz;
+  directions(qa, u1, u2, u3, uz);
+  return 0.5 * qd.dot(t.inertia * qd) + a[14] * uz[0] + a[15] * uz[1] + a[16] * uz[2];
+}
+
+}  // namespace stride::model

@@ -1,0 +1,38 @@
+#pragma once
+// Analytic inverse kinematics of the NAO legs: sole pose in the torso frame -> six joint angles.
+// Angles in the robot's sign convention, order HipYawPitch, HipRoll, HipPitch, Knee, AnklePitch,
+// AnkleRoll (as nao_fk.hpp). Knee >= 0 (the NAO's knee bends one way). Allocation-free.
+#include <Eigen/Geometry>
+
+#include "robot/model/kinematics/nao_chains.hpp"
+
+namespace stride::model {
+
+struct LegIkResult {
+  LegAngles q{};
+  bool reachable = true;      // false: the ankle target was moved onto the reachable shell
+  bool knee_clamped = false;  // the target was beyond the stretched leg (knee set to 0)
+  double position_error = 0;  // distance the ankle target had to move (m)
+  double orientation_error =
+      0;  // rotation (rad) between the reached and the wanted foot; only
+          // non-zero when HipYawPitch was imposed (leg_ik_with_hip_yaw_pitch)
+};
+
+// Full 6-DoF solution: reaches any pose within the leg's workspace exactly.
+LegIkResult leg_ik(Side side, const Eigen::Isometry3d& sole_in_torso);
+
+// HipYawPitch imposed (one motor drives both legs): the ankle position is reached exactly, the
+// foot orientation as closely as the remaining ankle pitch/roll allow.
+LegIkResult leg_ik_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sole_in_torso,
+                                      double hip_yaw_pitch);
+
+struct LegsIkResult {
+  LegIkResult left, right;
+};
+
+// Both legs with the shared HipYawPitch: the left leg is solved fully and its yaw-pitch is
+// imposed on the right leg, as the robot's single motor follows the left joint's command.
+// Targets that agree on HipYawPitch are both reached exactly.
+LegsIkResult legs_ik(const Eigen::Isometry3d& left_sole, const Eigen::Isometry3d& right_sole);
+
+}  // namespace stride::model

@@ -1,0 +1,115 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "robot/model/kinematics/nao_fk.hpp"
+#include "robot/model/kinematics/nao_leg_ik.hpp"
+#include "robot/nao/nao_dimensions.hpp"
+#include "tests/model/nao_model_fixture.hpp"
+
+namespace stride::model {
+namespace {
+
+using test::pose_error;
+
+// Leg angles uniform within the NAO's limits (knee from 0: the IK's branch); every tenth sample
+// has a knee within 1e-6 rad of stretched.
+LegAngles random_leg(Side side, std::mt19937& rng, int i) {
+  const double s = side == Side::Left ? 1 : -1;
+  auto u = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  LegAngles q;
+  q[0] = u(-1.14529, 0.740718);
+  q[1] = s > 0 ? u(-0.379435, 0.79046) : u(-0.79046, 0.379435);
+  q[2] = u(-1.53589, 0.48398);
+  q[3] = i % 10 == 0 ? u(0, 1e-6) : u(0, 2.11255);
+  q[4] = u(-1.18944, 0.922581);
+  q[5] = s > 0 ? u(-0.397761, 0.768992) : u(-0.768992, 0.397761);
+  return q;
+}
+
+TEST(LegIk, RoundTripOverTenThousandReachablePoses) {
+  std::mt19937 rng(7);
+  double worst_pose = 0, worst_angle = 0;
+  int unreachable = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const Side side = i % 2 ? Side::Right : Side::Left;
+    const LegAngles q = random_leg(side, rng, i / 2);
+    const Eigen::Isometry3d target = leg_fk(side, q);
+    const LegIkResult r = leg_ik(side, target);
+    unreachable += !r.reachable;
+    worst_pose = std::max(worst_pose, pose_error(leg_fk(side, r.q), target));
+    if (q[3] > 1e-3)  // away from the stretched knee the angles themselves are unique
+      for (int j = 0; j < kLegJoints; ++j)
+        worst_angle = std::max(worst_angle, std::abs(r.q[j] - q[j]));
+  }
+  EXPECT_LT(worst_pose, 1e-9);
+  EXPECT_LT(worst_angle, 1e-7);
+  EXPECT_LE(unreachable, 10000 / 20);  // only knees within rounding of stretched may flag
+}
+
+TEST(LegIk, UnreachablePoseIsClampedFlaggedAndFinite) {
+  Eigen::Isometry3d target = Eigen::Isometry3d::Identity();
+  target.translation() = Eigen::Vector3d(0.05, 0.05, -0.40);  // 10 cm beyond the stretched leg
+  const LegIkResult r = leg_ik(Side::Left, target);
+  EXPECT_FALSE(r.reachable);
+  EXPECT_TRUE(r.knee_clamped);
+  EXPECT_DOUBLE_EQ(r.q[3], 0.0);
+  for (double a : r.q) EXPECT_TRUE(std::isfinite(a));
+  // The reached ankle lies on the line from the hip to the wanted ankle, at full leg length.
+  const Eigen::Vector3d hip(0, nao::kHipOffsetY, -nao::kHipOffsetZ);
+  const Eigen::Vector3d ankle = leg_fk(Side::Left, r.q) * Eigen::Vector3d(0, 0, nao::kFootHeight);
+  EXPECT_NEAR((ankle - hip).norm(), nao::kThighLength + nao::kTibiaLength, 1e-12);
+  const Eigen::Vector3d wanted = target * Eigen::Vector3d(0, 0, nao::kFootHeight) - hip;
+  EXPECT_NEAR((ankle - hip).normalized().dot(wanted.normalized()), 1.0, 1e-12);
+  EXPECT_NEAR(r.position_error, wanted.norm() - nao::kThighLength - nao::kTibiaLength, 1e-12);
+}
+
+TEST(LegIk, NoJumpWhenCrossingTheStretchedBoundary) {
+  LegAngles q{0, 0.1, -0.4, 0.3, -0.2, -0.05};
+  Eigen::Isometry3d target = leg_fk(Side::Left, q);
+  LegAngles previous = leg_ik(Side::Left, target).q;
+  double worst_step = 0;
+  for (int i = 0; i < 6000; ++i) {  // 6 cm downwards in 10 um steps, through the boundary
+    target.translation().z() -= 1e-5;
+    const LegIkResult r = leg_ik(Side::Left, target);
+    for (int j = 0; j < kLegJoints; ++j) {
+      ASSERT_TRUE(std::isfinite(r.q[j]));
+      worst_step = std::max(worst_step, std::abs(r.q[j] - previous[j]));
+    }
+    previous = r.q;
+  }
+  EXPECT_FALSE(leg_ik(Side::Left, target).reachable);
+  EXPECT_LT(worst_step, 0.03);  // the knee moves like sqrt(distance) near stretched
+}
+
+TEST(LegIk, SharedHipYawPitchReachesBothConsistentTargets) {
+  std::mt19937 rng(3);
+  for (int i = 0; i < 500; ++i) {
+    LegAngles l = random_leg(Side::Left, rng, 1), r = random_leg(Side::Right, rng, 1);
+    r[0] = l[0];
+    const Eigen::Isometry3d lt = leg_fk(Side::Left, l), rt = leg_fk(Side::Right, r);
+    const LegsIkResult both = legs_ik(lt, rt);
+    EXPECT_DOUBLE_EQ(both.left.q[0], both.right.q[0]);
+    EXPECT_LT(pose_error(leg_fk(Side::Left, both.left.q), lt), 1e-9);
+    EXPECT_LT(pose_error(leg_fk(Side::Right, both.right.q), rt), 1e-9);
+    EXPECT_LT(both.right.orientation_error, 1e-9);
+  }
+}
+
+TEST(LegIk, ConflictingTargetsLeftWinsRightAnklePositionStillReached) {
+  const LegAngles l{-0.4, 0.1, -0.5, 0.8, -0.3, -0.1};
+  const LegAngles r{0.0, -0.1, -0.5, 0.8, -0.3, 0.1};  // wants yaw-pitch 0
+  const Eigen::Isometry3d rt = leg_fk(Side::Right, r);
+  const LegsIkResult both = legs_ik(leg_fk(Side::Left, l), rt);
+  EXPECT_NEAR(both.right.q[0], -0.4, 1e-12);
+  EXPECT_GT(both.right.orientation_error, 0.01);
+  const Eigen::Vector3d up(0, 0, nao::kFootHeight);
+  const Eigen::Vector3d reached_ankle = leg_fk(Side::Right, both.right.q) * up;
+  EXPECT_LT((reached_ankle - rt * up).norm(), 1e-9);
+}
+
+}  // namespace
+}  // namespace stride::model
