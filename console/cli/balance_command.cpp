@@ -13,7 +13,7 @@
 #include "behaviours/balance/lqr_balance.hpp"
 #include "behaviours/balance/strategy_classifier.hpp"
 #include "console/cli/subcommand.hpp"
-#include "console/plot/gnuplot_plot.hpp"
+#include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -114,25 +114,13 @@ Options parse(Args args) {
   return o;
 }
 
-// One simulated initial state: a name and rows of (t, quantities...).
-struct Run {
-  std::string name;
-  std::vector<std::vector<double>> rows;
-};
-
-struct Figure {
-  std::string stem, title, x_label, y_label;
-  std::vector<std::string> quantities;  // time plots: one curve per quantity and run
-  bool phase = false;                   // phase plane: x against v for every run
-  std::vector<std::pair<std::string, PhaseLine>> lines;  // straight boundaries in the phase plane
-  std::string x_range, y_range;                          // gnuplot ranges; empty = automatic
-};
+using plot::Figure;
+using plot::Run;
 
 struct Report {
   std::ostringstream text;
   std::vector<std::pair<std::string, std::string>> json;  // key -> JSON value
-  std::vector<std::string> columns;                       // first is "t"
-  std::vector<Run> runs;
+  plot::RunSet set;                                       // columns: first is "t"
   std::vector<Figure> figures;
 };
 
@@ -166,7 +154,7 @@ std::string interval_json(const CaptureInterval& c) {
 
 void add_bang_bang_runs(Report& rep, const Options& o, const std::vector<ComState>& states,
                         bool combined) {
-  rep.columns = {"t", "x", "v", "theta", "theta_dot", "tau", "zmp"};
+  rep.set.columns = {"t", "x", "v", "theta", "theta_dot", "tau", "zmp"};
   const double T = o.duration.value_or(1.5);
   std::ostringstream cases_json;
   for (const ComState& s : states) {
@@ -177,7 +165,7 @@ void add_bang_bang_runs(Report& rep, const Options& o, const std::vector<ComStat
       const HipModelState h = bang_bang_state(o.p, s, plan, t);
       run.rows.push_back({t, h.x, h.v, h.theta, h.theta_dot, h.tau, plan.zmp});
     }
-    rep.runs.push_back(std::move(run));
+    rep.set.runs.push_back(std::move(run));
     rep.text << "  " << state_name(s) << ": capture point " << num(plan.capture_point) << ", "
              << (plan.recoverable ? "recoverable" : "NOT recoverable") << ", zmp " << num(plan.zmp)
              << ", tau " << num(plan.profile.tau) << " N m, t1 " << num(plan.profile.t1)
@@ -229,25 +217,26 @@ Report run_command(const Options& o) {
     sub.v0 = s.v;
     sub.x0 = s.x;
     if (c.strategy == Strategy::ankle) {
-      rep.columns = {"t", "x", "v", "zmp"};
+      rep.set.columns = {"t", "x", "v", "zmp"};
       Run run{state_name(s), {}};
       for (long i = 0; i * o.dt <= o.duration.value_or(1.5) + 1e-12; ++i) {
         const ComState st = lipm_state(s, w, c.ankle_result.forcing, i * o.dt);
         run.rows.push_back({i * o.dt, st.x, st.v, c.ankle_result.zmp});
       }
-      rep.runs.push_back(std::move(run));
+      rep.set.runs.push_back(std::move(run));
     } else {
       Report tmp;
       add_bang_bang_runs(tmp, sub, {s}, c.strategy != Strategy::hip);
-      rep.columns = tmp.columns;
-      rep.runs = std::move(tmp.runs);
+      rep.set.columns = tmp.set.columns;
+      rep.set.runs = std::move(tmp.set.runs);
     }
     rep.figures.push_back({"classify_com",
                            "CoM, " + std::string(to_string(c.strategy)) + " strategy",
                            "t [s]",
                            "x [m]",
                            {"x"},
-                           false,
+                           "",
+                           "",
                            {}});
   } else if (o.what == "ankle-boundaries") {
     rep.text << "open-loop ankle strategy (Eq. 7.13), omega " << num(w) << " 1/s\n"
@@ -261,7 +250,7 @@ Report run_command(const Options& o) {
         {"l2", "{\"slope\": " + num(l2.slope) + ", \"intercept\": " + num(l2.intercept) + "}"});
     std::vector<ComState> grid;
     for (int k = -5; k <= 8; ++k) grid.push_back({0.0, 0.1 * k});
-    rep.columns = {"t", "x", "v", "zmp"};
+    rep.set.columns = {"t", "x", "v", "zmp"};
     for (const ComState& s : cases(o, grid)) {
       const AnkleOpenLoopResult a = ankle_open_loop(p, s);
       Run run{state_name(s) + (a.recoverable ? " stable" : " falls"), {}};
@@ -269,7 +258,7 @@ Report run_command(const Options& o) {
         const ComState st = lipm_state(s, w, a.forcing, i * o.dt);
         run.rows.push_back({i * o.dt, st.x, st.v, a.zmp});
       }
-      rep.runs.push_back(std::move(run));
+      rep.set.runs.push_back(std::move(run));
       rep.text << "  " << state_name(s) << ": capture point " << num(a.capture_point) << " -> "
                << (a.recoverable ? "recoverable" : "falls") << ", zmp " << num(a.zmp) << "\n";
     }
@@ -278,8 +267,9 @@ Report run_command(const Options& o) {
                            "x [m]",
                            "xdot [m/s]",
                            {},
-                           true,
-                           {{"l1", l1}, {"l2", l2}},
+                           "x",
+                           "v",
+                           {{"l1", l1.slope, l1.intercept}, {"l2", l2.slope, l2.intercept}},
                            "[-0.3:0.3]",
                            "[-1:1.2]"});
   } else if (o.what == "closed-loop") {
@@ -302,7 +292,7 @@ Report run_command(const Options& o) {
     rep.json.push_back({"k1", num(c.k1)});
     rep.json.push_back({"k2", num(c.k2)});
     rep.json.push_back({"boundaries", "{" + lines_json.str() + "}"});
-    rep.columns = {"t", "x", "v", "zmp", "demanded_zmp", "ankle_torque"};
+    rep.set.columns = {"t", "x", "v", "zmp", "demanded_zmp", "ankle_torque"};
     std::ostringstream cases_json;
     for (const ComState& s : cases(o, {{-0.4, 2.3}, {0.42, -2.3}, {-0.32, 2.3}, {0.37, -2.3}})) {
       const ClosedLoopRun r =
@@ -310,7 +300,7 @@ Report run_command(const Options& o) {
       Run run{state_name(s), {}};
       for (const ClosedLoopSample& q : r.samples)
         run.rows.push_back({q.t, q.x, q.v, q.zmp, q.demanded_zmp, q.ankle_torque});
-      rep.runs.push_back(std::move(run));
+      rep.set.runs.push_back(std::move(run));
       rep.text << "  " << state_name(s) << ": " << (r.converged ? "converges" : "diverges")
                << (r.saturated ? " (ZMP saturated at the sole border)" : "") << "\n";
       cases_json << (cases_json.tellp() ? ", " : "") << "{\"x0\": " << num(s.x)
@@ -324,8 +314,12 @@ Report run_command(const Options& o) {
                            "x [m]",
                            "xdot [m/s]",
                            {},
-                           true,
-                           {{"l1", c.l1}, {"l2", c.l2}, {"a", c.a}, {"b", c.b}},
+                           "x",
+                           "v",
+                           {{"l1", c.l1.slope, c.l1.intercept},
+                            {"l2", c.l2.slope, c.l2.intercept},
+                            {"a", c.a.slope, c.a.intercept},
+                            {"b", c.b.slope, c.b.intercept}},
                            "[-0.6:0.6]",
                            "[-3:3]"});
     rep.figures.push_back({"fig7_7_zmp",
@@ -333,14 +327,16 @@ Report run_command(const Options& o) {
                            "t [s]",
                            "ZMP [m]",
                            {"zmp"},
-                           false,
+                           "",
+                           "",
                            {}});
     rep.figures.push_back({"fig7_7_torque",
                            "Ankle torque during PD recovery (Fig. 7.7)",
                            "t [s]",
                            "tau_a [N m]",
                            {"ankle_torque"},
-                           false,
+                           "",
+                           "",
                            {}});
   } else if (o.what == "hip" || o.what == "combined") {
     const bool combined = o.what == "combined";
@@ -361,18 +357,19 @@ Report run_command(const Options& o) {
     const std::string fig = combined ? "fig7_11" : "fig7_9";
     const std::string tag = combined ? " (Fig. 7.11)" : " (Fig. 7.9)";
     rep.figures.push_back(
-        {fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, false, {}, "", "[-0.4:0.4]"});
+        {fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, "", "", {}, "", "[-0.4:0.4]"});
     rep.figures.push_back(
-        {fig + "_hip_angle", "Hip angle" + tag, "t [s]", "theta [rad]", {"theta"}, false, {}});
+        {fig + "_hip_angle", "Hip angle" + tag, "t [s]", "theta [rad]", {"theta"}, "", "", {}});
     rep.figures.push_back({fig + "_hip_rate",
                            "Hip angular velocity" + tag,
                            "t [s]",
                            "thetadot [rad/s]",
                            {"theta_dot"},
-                           false,
+                           "",
+                           "",
                            {}});
     rep.figures.push_back(
-        {fig + "_hip_torque", "Hip torque" + tag, "t [s]", "tau_h [N m]", {"tau"}, false, {}});
+        {fig + "_hip_torque", "Hip torque" + tag, "t [s]", "tau_h [N m]", {"tau"}, "", "", {}});
   } else if (o.what == "lqr") {
     const LqrBalanceModel m = lqr_balance_model(p);
     const Eigen::Matrix4d Q = Eigen::Vector4d(o.q[0], o.q[1], o.q[2], o.q[3]).asDiagonal();
@@ -388,7 +385,7 @@ Report run_command(const Options& o) {
              << sol.S.format(fmt) << "\n  closed-loop poles: " << sol.closed_loop_poles.transpose()
              << "\n  CARE residual norm: " << num(care_residual(m.A, m.B, Q, R, sol.S).norm())
              << "\n";
-    rep.columns = {"t", "x", "theta", "xdot", "thetadot", "zmp", "tau"};
+    rep.set.columns = {"t", "x", "theta", "xdot", "thetadot", "zmp", "tau"};
     Run run{"lqr", {}};
     double peak[6] = {0, 0, 0, 0, 0, 0};
     for (const LqrSample& s : samples) {
@@ -409,94 +406,23 @@ Report run_command(const Options& o) {
     rep.json.push_back({"peak_zmp", num(peak[4])});
     rep.json.push_back({"peak_tau", num(peak[5])});
     rep.json.push_back({"final_state_norm", num(samples.back().state.norm())});
-    rep.runs.push_back(std::move(run));
+    rep.set.runs.push_back(std::move(run));
     rep.figures.push_back(
-        {"fig7_13_com", "CoM under LQR (Fig. 7.13)", "t [s]", "x [m]", {"x"}, false, {}});
+        {"fig7_13_com", "CoM under LQR (Fig. 7.13)", "t [s]", "x [m]", {"x"}, "", "", {}});
     rep.figures.push_back({"fig7_14_state",
                            "LQR state (Fig. 7.14)",
                            "t [s]",
                            "state",
                            {"x", "theta", "xdot", "thetadot"},
-                           false,
+                           "",
+                           "",
                            {}});
     rep.figures.push_back(
-        {"fig7_14_inputs", "LQR inputs (Fig. 7.14)", "t [s]", "input", {"zmp", "tau"}, false, {}});
+        {"fig7_14_inputs", "LQR inputs (Fig. 7.14)", "t [s]", "input", {"zmp", "tau"}, "", "", {}});
   } else {
     throw Error("unknown <what> '" + o.what + "'; " + kUsage);
   }
   return rep;
-}
-
-void write_long_csv(const Report& rep, const std::string& path) {
-  plot::Table t;
-  t.columns = {"case"};
-  t.columns.insert(t.columns.end(), rep.columns.begin(), rep.columns.end());
-  for (std::size_t k = 0; k < rep.runs.size(); ++k)
-    for (const auto& row : rep.runs[k].rows) {
-      std::vector<double> r{static_cast<double>(k + 1)};
-      r.insert(r.end(), row.begin(), row.end());
-      t.add_row(std::move(r));
-    }
-  plot::write_csv(path, t);
-}
-
-// One wide CSV per figure: t, <quantity>_<case>... (NaN-padded), plus boundary-line columns.
-void write_figure(const Report& rep, const Figure& f, const std::string& dir) {
-  std::size_t n = 0;
-  for (const Run& r : rep.runs) n = std::max(n, r.rows.size());
-  auto col = [&](const std::string& q) {
-    const auto it = std::find(rep.columns.begin(), rep.columns.end(), q);
-    return static_cast<std::size_t>(it - rep.columns.begin());
-  };
-  plot::Table t;
-  plot::PlotSpec spec{dir + "/" + f.stem + ".csv", "t", {}, f.title, f.x_label, f.y_label,
-                      dir + "/" + f.stem + ".png"};
-  std::vector<std::pair<std::size_t, std::size_t>> picks;  // (run, column)
-  t.columns.push_back("t");
-  const std::vector<std::string> qs = f.phase ? std::vector<std::string>{"x", "v"} : f.quantities;
-  for (std::size_t k = 0; k < rep.runs.size(); ++k)
-    for (const std::string& q : qs) {
-      t.columns.push_back(q + "_" + std::to_string(k + 1));
-      picks.push_back({k, col(q)});
-    }
-  double xmin = 1e9, xmax = -1e9;
-  for (std::size_t k = 0; k < rep.runs.size(); ++k) {
-    const std::string label = rep.runs[k].name;
-    if (f.phase) {
-      spec.series.push_back({"v_" + std::to_string(k + 1), label, "x_" + std::to_string(k + 1)});
-      for (const auto& row : rep.runs[k].rows)
-        if (std::abs(row[col("x")]) < 1.0) {
-          xmin = std::min(xmin, row[col("x")]);
-          xmax = std::max(xmax, row[col("x")]);
-        }
-    } else {
-      for (const std::string& q : qs)
-        spec.series.push_back(
-            {q + "_" + std::to_string(k + 1), (qs.size() > 1 ? q + " " : "") + label, ""});
-    }
-  }
-  for (const auto& [name, line] : f.lines) {
-    t.columns.push_back(name);
-    spec.series.push_back({name, name, "line_x"});
-  }
-  if (!f.lines.empty()) t.columns.push_back("line_x");
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<double> row{NAN};
-    for (const auto& [k, c] : picks) {
-      const auto& rows = rep.runs[k].rows;
-      row.push_back(i < rows.size() ? rows[i][c] : NAN);
-      if (!f.phase && i < rows.size()) row[0] = rows[i][0];
-    }
-    if (f.phase) row[0] = i * 1.0;
-    const double lx = xmin + (xmax - xmin) * i / std::max<std::size_t>(1, n - 1);
-    for (const auto& [name, line] : f.lines) row.push_back(line.velocity_at(lx));
-    if (!f.lines.empty()) row.push_back(lx);
-    t.add_row(std::move(row));
-  }
-  spec.x_range = f.x_range;
-  spec.y_range = f.y_range;
-  plot::write_csv(spec.csv_path, t);
-  plot::render_png(spec);
 }
 
 }  // namespace
@@ -505,12 +431,12 @@ int balance_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     const Options o = parse(args);
     const Report rep = run_command(o);
-    if (!o.csv.empty()) write_long_csv(rep, o.csv);
+    if (!o.csv.empty()) plot::write_long_csv(rep.set, o.csv);
     if (!o.plots.empty()) {
       std::error_code ec;
       std::filesystem::create_directories(o.plots, ec);
       if (ec) throw Error("--plots: cannot create directory '" + o.plots + "'");
-      for (const Figure& f : rep.figures) write_figure(rep, f, o.plots);
+      for (const Figure& f : rep.figures) plot::write_figure(rep.set, f, o.plots);
     }
     if (o.json) {
       out << "{";
