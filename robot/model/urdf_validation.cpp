@@ -8,6 +8,7 @@
 #include <tinyxml2.h>
 
 #include "robot/core/error.hpp"
+#include "robot/core/xml_error.hpp"
 
 namespace stride::model {
 namespace {
@@ -130,7 +131,7 @@ void validate_urdf_text(const std::string& xml, const std::string& source_name) 
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
     throw error_at(source_name, doc.ErrorLineNum(),
-                   std::string("malformed XML: ") + doc.ErrorName());
+                   xml_error_text(doc));
   const XMLElement* robot = doc.RootElement();
   Checker c{source_name};
   if (!robot || std::string_view(robot->Name()) != "robot")

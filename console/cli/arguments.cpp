@@ -1,0 +1,83 @@
+#include "console/cli/arguments.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "robot/core/error.hpp"
+
+namespace stride::cli {
+
+ArgumentReader::ArgumentReader(Args args, std::string command)
+    : args_(args), command_(std::move(command)) {}
+
+int ArgumentReader::find(const std::string& flag) const {
+  for (size_t i = 0; i < args_.size(); ++i)
+    if (args_[i] == flag) return static_cast<int>(i);
+  return -1;
+}
+
+std::string ArgumentReader::positional(const char* what) {
+  for (size_t i = 0; i < args_.size(); ++i) {
+    if (used_.count(static_cast<int>(i))) continue;
+    if (args_[i].rfind("--", 0) == 0) {
+      ++i;  // skip the flag's value
+      continue;
+    }
+    used_.insert(static_cast<int>(i));
+    return args_[i];
+  }
+  throw Error("stride " + command_ + ": missing <" + what + ">");
+}
+
+bool ArgumentReader::has(const std::string& flag) const { return find(flag) >= 0; }
+
+bool ArgumentReader::flag(const std::string& flag) {
+  const int i = find(flag);
+  if (i < 0) return false;
+  used_.insert(i);
+  return true;
+}
+
+std::string ArgumentReader::text(const std::string& flag) {
+  const int i = find(flag);
+  if (i < 0) throw Error("stride " + command_ + ": missing " + flag);
+  if (i + 1 >= static_cast<int>(args_.size()))
+    throw Error("stride " + command_ + ": " + flag + ": expected a value after it");
+  used_.insert(i);
+  used_.insert(i + 1);
+  return args_[i + 1];
+}
+
+std::string ArgumentReader::text_or(const std::string& flag, const std::string& fallback) {
+  return has(flag) ? text(flag) : fallback;
+}
+
+double ArgumentReader::number(const std::string& flag) {
+  const std::string t = text(flag);
+  double v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
+    throw Error("stride " + command_ + ": " + flag + ": '" + t + "' is not a number");
+  return v;
+}
+
+double ArgumentReader::number_or(const std::string& flag, double fallback) {
+  return has(flag) ? number(flag) : fallback;
+}
+
+std::uint64_t ArgumentReader::unsigned_integer(const std::string& flag) {
+  const std::string t = text(flag);
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size())
+    throw Error("stride " + command_ + ": " + flag + ": '" + t + "' is not a non-negative integer");
+  return v;
+}
+
+void ArgumentReader::finish() const {
+  for (size_t i = 0; i < args_.size(); ++i)
+    if (!used_.count(static_cast<int>(i)))
+      throw Error("stride " + command_ + ": unexpected argument '" + args_[i] + "'");
+}
+
+}  // namespace stride::cli

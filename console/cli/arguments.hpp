@@ -1,0 +1,33 @@
+#pragma once
+// Reading `--flag value` command lines strictly: unknown flags and bad values are one-line errors.
+#include <cstdint>
+#include <set>
+#include <string>
+
+#include "console/cli/subcommand.hpp"
+
+namespace stride::cli {
+
+class ArgumentReader {
+ public:
+  ArgumentReader(Args args, std::string command);
+
+  std::string positional(const char* what);  // next non-flag argument, required
+  bool has(const std::string& flag) const;
+  bool flag(const std::string& flag);        // a flag without value
+  std::string text(const std::string& flag);
+  std::string text_or(const std::string& flag, const std::string& fallback);
+  double number(const std::string& flag);
+  double number_or(const std::string& flag, double fallback);
+  std::uint64_t unsigned_integer(const std::string& flag);
+  // Throws if anything was not consumed.
+  void finish() const;
+
+ private:
+  int find(const std::string& flag) const;
+  Args args_;
+  std::string command_;
+  std::set<int> used_;
+};
+
+}  // namespace stride::cli

@@ -1,0 +1,80 @@
+#pragma once
+// A minimal streaming JSON writer: enough for reports and machine-readable command output.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stride {
+
+class JsonWriter {
+ public:
+  JsonWriter& begin_object() { value_prefix(); out_ += '{'; first_.push_back(true); return *this; }
+  JsonWriter& end_object() { out_ += '}'; first_.pop_back(); return *this; }
+  JsonWriter& begin_array() { value_prefix(); out_ += '['; first_.push_back(true); return *this; }
+  JsonWriter& end_array() { out_ += ']'; first_.pop_back(); return *this; }
+  JsonWriter& key(std::string_view k) {
+    comma();
+    string_literal(k);
+    out_ += ':';
+    after_key_ = true;
+    return *this;
+  }
+  JsonWriter& value(double v) {
+    value_prefix();
+    if (!std::isfinite(v)) {
+      out_ += "null";
+    } else {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.17g", v);
+      out_ += buf;
+    }
+    return *this;
+  }
+  JsonWriter& value(long long v) { value_prefix(); out_ += std::to_string(v); return *this; }
+  JsonWriter& value(int v) { return value(static_cast<long long>(v)); }
+  JsonWriter& value(bool v) { value_prefix(); out_ += v ? "true" : "false"; return *this; }
+  JsonWriter& value(std::string_view s) { value_prefix(); string_literal(s); return *this; }
+  JsonWriter& value(const char* s) { return value(std::string_view(s)); }
+  template <class T>
+  JsonWriter& field(std::string_view k, const T& v) { key(k); return value(v); }
+  const std::string& str() const { return out_; }
+
+ private:
+  void comma() {
+    if (!first_.empty()) {
+      if (!first_.back()) out_ += ',';
+      first_.back() = false;
+    }
+  }
+  void value_prefix() {
+    if (after_key_) after_key_ = false;
+    else comma();
+  }
+  void string_literal(std::string_view s) {
+    out_ += '"';
+    for (char c : s) {
+      switch (c) {
+        case '"': out_ += "\\\""; break;
+        case '\\': out_ += "\\\\"; break;
+        case '\n': out_ += "\\n"; break;
+        case '\t': out_ += "\\t"; break;
+        default:
+          if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out_ += buf;
+          } else {
+            out_ += c;
+          }
+      }
+    }
+    out_ += '"';
+  }
+  std::string out_;
+  std::vector<bool> first_;
+  bool after_key_ = false;
+};
+
+}  // namespace stride

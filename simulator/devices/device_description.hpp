@@ -1,0 +1,68 @@
+#pragma once
+// What a robot's devices are and how they behave, from the device file next to its URDF.
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace stride::sim {
+
+// A brushed DC motor with its gear, seen from the joint.
+struct MotorSpec {
+  std::string name;
+  double ratio = 1;             // joint value = motor value / ratio
+  double stall_torque = 1;      // N*m at the joint, at stiffness 1 and zero speed
+  double no_load_speed = 5;     // rad/s at the joint
+  double torque_constant = 0.01;  // N*m/A at the motor shaft
+  double gain = 100;            // 1/s: target joint speed per radian of position error
+};
+
+struct ServoSpec {
+  std::string joint;  // URDF joint name
+  int motor = -1;     // index into DeviceDescription::motors
+};
+
+struct ImuSpec {
+  std::string link = "torso";
+  Eigen::Vector3d accelerometer_at = Eigen::Vector3d::Zero();  // link frame
+  Eigen::Vector3d gyroscope_at = Eigen::Vector3d::Zero();
+  double accel_noise = 0;  // std dev, m/s^2
+  double gyro_noise = 0;   // std dev, rad/s
+  double angle_noise = 0;  // std dev, rad
+  Eigen::Vector3d gyro_bias = Eigen::Vector3d::Zero();   // rad/s, added always
+  Eigen::Vector3d accel_bias = Eigen::Vector3d::Zero();  // m/s^2
+  double accel_range = 2 * 9.81;   // saturation, m/s^2
+  double gyro_range = 8.7266;      // saturation, rad/s (500 deg/s)
+  int delay_frames = 0;            // control frames between sampling and delivery
+};
+
+struct FsrSpec {
+  std::string link;                          // foot link
+  std::array<std::string, 4> names;          // FL, FR, RL, RR
+  std::array<Eigen::Vector2d, 4> positions;  // link frame x, y
+  double sole_z = 0;                         // link-frame height of the sole plane
+  double noise = 0;                          // std dev, N
+  double max_force = 25;                     // N, saturation
+};
+
+struct EncoderSpec {
+  int bits = 12;        // quantisation over one turn
+  double noise = 0;     // std dev, rad
+};
+
+struct DeviceDescription {
+  std::string file;
+  double period = 0.01;  // s, sensor/actuator cycle
+  std::vector<MotorSpec> motors;
+  std::vector<ServoSpec> servos;
+  EncoderSpec encoder;
+  ImuSpec imu;
+  std::vector<FsrSpec> fsrs;  // two feet: left then right
+};
+
+// Throws stride::Error("file:line: ...").
+DeviceDescription load_device_file(const std::string& path);
+
+}  // namespace stride::sim

@@ -1,0 +1,38 @@
+#pragma once
+// Four force sensors under one sole, from the contact forces the solver applied to the foot:
+// the foot's normal load and its centre of pressure are shared among the four sensors as a rigid
+// plate on four supports would (least-norm, non-negative), then noise and saturation.
+#include <array>
+
+#include <Eigen/Core>
+
+#include "simulator/devices/device_description.hpp"
+#include "simulator/devices/noise_source.hpp"
+#include "simulator/world/physics_world.hpp"
+#include "simulator/world/robot_body.hpp"
+
+namespace stride::sim {
+
+// Non-negative least-norm forces at `points` whose sum is `load` and whose moment centre is `cop`.
+std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
+                                      const Eigen::Vector2d& cop);
+
+class FsrDevice {
+ public:
+  FsrDevice(const RobotBody& body, int robot_index, const FsrSpec& spec, NoiseSource noise);
+  // After each physics step: add this step's sole-normal load and its moments.
+  void accumulate(const RobotBody& body, const PhysicsWorld& world);
+  // End of a control frame: mean over the frame's steps, shared out, noise, clamp; resets.
+  std::array<double, 4> sample(bool noise_on);
+
+ private:
+  FsrSpec spec_;
+  int link_;
+  int robot_;
+  NoiseSource noise_;
+  double load_sum_ = 0;
+  Eigen::Vector2d moment_sum_ = Eigen::Vector2d::Zero();  // sum of load * (x, y)
+  int steps_ = 0;
+};
+
+}  // namespace stride::sim

@@ -1,0 +1,73 @@
+#include "simulator/devices/servo_bank.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "robot/core/error.hpp"
+
+namespace stride::sim {
+
+ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices) {
+  const auto& model = body.model();
+  servo_of_joint_.assign(model.joints.size(), -1);
+  for (const ServoSpec& s : devices.servos) {
+    const int j = model.joint_index(s.joint);
+    if (j < 0 || !model.joints[j].movable())
+      throw Error(devices.file + ": servo for '" + s.joint + "', which is not a movable joint of " +
+                  model.source);
+    servo_of_joint_[j] = static_cast<int>(joints_.size());
+    joints_.push_back(j);
+    motors_.push_back(&devices.motors[s.motor]);
+  }
+  commands_.resize(joints_.size());
+  applied_torque_.assign(joints_.size(), 0);
+  current_sum_.assign(joints_.size(), 0);
+}
+
+void ServoBank::apply(const RobotBody& body) {
+  for (size_t s = 0; s < joints_.size(); ++s) {
+    const int j = joints_[s];
+    dJointID id = body.joint(j);
+    if (dJointGetType(id) != dJointTypeHinge) continue;
+    const MotorSpec& m = *motors_[s];
+    const ServoCommand& c = commands_[s];
+    const double qd = body.joint_velocity(j);
+    // A DC motor's torque falls linearly with speed; keep a floor so it can always brake.
+    const double speed_factor = std::clamp(1.0 - std::abs(qd) / m.no_load_speed, 0.25, 1.0);
+    const double max_torque = m.stall_torque * speed_factor;
+    if (c.mode == hal::ServoMode::Position) {
+      const double err = c.position - body.joint_position(j);
+      const double v = std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed);
+      dJointSetHingeParam(id, dParamVel, v);
+      dJointSetHingeParam(id, dParamFMax, std::clamp(c.stiffness, 0.0, 1.0) * max_torque);
+      applied_torque_[s] = 0;
+    } else {
+      dJointSetHingeParam(id, dParamFMax, 0);
+      const double tau = std::clamp(c.torque, -max_torque, max_torque);
+      dJointAddHingeTorque(id, tau);
+      applied_torque_[s] = tau;
+    }
+  }
+}
+
+void ServoBank::measure(const RobotBody& body) {
+  for (size_t s = 0; s < joints_.size(); ++s) {
+    const MotorSpec& m = *motors_[s];
+    const double tau = commands_[s].mode == hal::ServoMode::Position
+                           ? body.joint_constraint_torque(joints_[s])
+                           : applied_torque_[s];
+    current_sum_[s] += std::abs(tau) / (m.ratio * m.torque_constant);
+  }
+  ++samples_;
+}
+
+void ServoBank::take_mean_currents(std::vector<double>& out) {
+  out.resize(joints_.size());
+  for (size_t s = 0; s < joints_.size(); ++s) {
+    out[s] = samples_ ? current_sum_[s] / samples_ : 0.0;
+    current_sum_[s] = 0;
+  }
+  samples_ = 0;
+}
+
+}  // namespace stride::sim

@@ -1,0 +1,47 @@
+#pragma once
+// NAO-like servos on a RobotBody: a velocity-servo position controller whose torque is bounded by
+// stiffness x the motor's speed-dependent torque, or a direct torque command.
+#include <vector>
+
+#include "robot/hal/actuator_frame.hpp"
+#include "simulator/devices/device_description.hpp"
+#include "simulator/world/robot_body.hpp"
+
+namespace stride::sim {
+
+struct ServoCommand {
+  hal::ServoMode mode = hal::ServoMode::Position;
+  double position = 0;   // rad
+  double stiffness = 1;  // 0..1
+  double torque = 0;     // N*m, Torque mode
+};
+
+class ServoBank {
+ public:
+  // One servo per joint named in the device file; joints without a servo are passive.
+  ServoBank(const RobotBody& body, const DeviceDescription& devices);
+
+  int servo_of_joint(int model_joint) const { return servo_of_joint_[model_joint]; }
+  int count() const { return static_cast<int>(joints_.size()); }
+  int joint(int servo) const { return joints_[servo]; }
+  ServoCommand& command(int servo) { return commands_[servo]; }
+  const ServoCommand& command(int servo) const { return commands_[servo]; }
+
+  // Before each physics step: set the ODE motors / torques from the commands.
+  void apply(const RobotBody& body);
+  // After each physics step: accumulate motor torque for the current estimate.
+  void measure(const RobotBody& body);
+  // Mean |armature current| since the last call (A), per servo; resets the accumulation.
+  void take_mean_currents(std::vector<double>& out);
+
+ private:
+  std::vector<int> joints_;  // model joint index per servo
+  std::vector<const MotorSpec*> motors_;
+  std::vector<int> servo_of_joint_;
+  std::vector<ServoCommand> commands_;
+  std::vector<double> applied_torque_;  // torque-mode torque of the current step
+  std::vector<double> current_sum_;
+  int samples_ = 0;
+};
+
+}  // namespace stride::sim

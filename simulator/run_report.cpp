@@ -1,0 +1,64 @@
+#include "simulator/run_report.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+#include "robot/core/json_writer.hpp"
+
+namespace stride::sim {
+
+std::string hash_hex(std::uint64_t h) {
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
+  JsonWriter j;
+  j.begin_object();
+  j.field("scene", sim.scene().name);
+  j.field("seed", static_cast<long long>(sim.scene().physics.seed));
+  j.field("sim_time", sim.time());
+  j.field("wall_time", timing.wall_time);
+  j.field("real_time_factor", timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0);
+  j.field("physics_steps", static_cast<long long>(sim.steps()));
+  j.field("state_hash", hash_hex(sim.state_hash()));
+  j.key("robots").begin_array();
+  for (int i = 0; i < sim.robot_count(); ++i) {
+    const auto& r = sim.robot(i);
+    const TorsoPose p = r.torso_pose();
+    j.begin_object();
+    j.field("name", r.name());
+    j.field("fell", r.fallen());
+    j.key("torso").begin_object();
+    j.field("x", p.x).field("y", p.y).field("z", p.z);
+    j.field("roll", p.roll).field("pitch", p.pitch).field("yaw", p.yaw);
+    j.end_object();
+    j.end_object();
+  }
+  j.end_array();
+  j.end_object();
+  return j.str() + "\n";
+}
+
+std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(3);
+  o << "scene " << sim.scene().name << "  seed " << sim.scene().physics.seed << "  sim "
+    << sim.time() << " s  wall " << timing.wall_time << " s  ";
+  o.precision(1);
+  o << (timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0) << "x real time  hash "
+    << hash_hex(sim.state_hash()) << "\n";
+  for (int i = 0; i < sim.robot_count(); ++i) {
+    const auto& r = sim.robot(i);
+    const TorsoPose p = r.torso_pose();
+    o.precision(4);
+    o << "  " << r.name() << ": torso x " << p.x << " y " << p.y << " z " << p.z << " m  roll "
+      << p.roll << " pitch " << p.pitch << " yaw " << p.yaw << " rad  "
+      << (r.fallen() ? "FELL" : "upright") << "\n";
+  }
+  return o.str();
+}
+
+}  // namespace stride::sim

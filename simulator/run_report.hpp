@@ -1,0 +1,17 @@
+#pragma once
+// The summary of a headless run: timing, the state hash, and each robot's torso and fall state.
+#include <string>
+
+#include "simulator/simulation.hpp"
+
+namespace stride::sim {
+
+struct RunTiming {
+  double wall_time = 0;  // s
+};
+
+std::string run_report_json(const Simulation& sim, const RunTiming& timing);
+std::string run_report_text(const Simulation& sim, const RunTiming& timing);
+std::string hash_hex(std::uint64_t h);
+
+}  // namespace stride::sim

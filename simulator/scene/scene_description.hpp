@@ -1,0 +1,105 @@
+#pragma once
+// A scene as plain data: everything the world is built from. Parsed and validated completely
+// before any world exists, so a bad file never half-loads.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace stride::sim {
+
+struct PhysicsSettings {
+  double step = 0.001;  // s
+  enum class Solver { Exact, Iterative } solver = Solver::Iterative;
+  int iterations = 20;  // iterative solver only
+  double sor = 1.3;     // over-relaxation of the iterative solver
+  double erp = 0.2;
+  double cfm = 1e-5;
+  double contact_erp = 0.2;
+  double contact_cfm = 1e-4;
+  int max_contacts = 8;  // per colliding geometry pair
+  Eigen::Vector3d gravity{0, 0, -9.81};
+  std::uint64_t seed = 1;
+};
+
+struct GroundSettings {
+  bool enabled = true;
+  double friction = 0.8;
+};
+
+struct StaticBox {
+  std::string name;
+  Eigen::Vector3d size{1, 1, 1};
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  double friction = 0.8;
+  int line = 0;
+};
+
+// A grid of thin tiles with seeded heights and tilts: a flat floor with local unevenness.
+struct UnevenPatch {
+  std::string name;
+  Eigen::Vector2d centre{0, 0};
+  Eigen::Vector2d size{2, 1};
+  double cell = 0.05;        // tile edge, m
+  double max_height = 0.003; // tile tops uniformly in [0, max_height]
+  double max_tilt = 0.02;    // rad, each tile tilted uniformly in [-max_tilt, max_tilt] per axis
+  double friction = 0.8;
+  std::uint64_t seed = 0;    // 0: derived from the scene seed
+};
+
+struct ControllerConfig {
+  std::map<std::string, std::string> providers;   // representation -> module
+  std::map<std::string, std::string> parameters;  // "Module.field" -> text value
+};
+
+struct SensorSwitches {
+  bool noise = true;
+  bool delay = true;
+  bool quantise = true;
+};
+
+struct RobotPlacement {
+  std::string name;
+  std::string urdf;     // resolved path
+  std::string devices;  // resolved path
+  Eigen::Vector3d xyz{0, 0, 0};
+  bool auto_height = true;  // put the lowest collision point on z = 0
+  Eigen::Vector3d rpy{0, 0, 0};
+  std::map<std::string, double> joints;  // initial joint angles by name
+  int joints_line = 0;
+  bool fixed_base = false;  // weld the root link to the world (test rigs, swing-leg studies)
+  double stiffness = 1.0;  // servo stiffness held until a controller commands otherwise
+  bool has_controller = false;
+  ControllerConfig controller;
+  SensorSwitches sensors;
+  double fall_tilt = 0.8;     // rad: |roll| or |pitch| of the torso beyond this = fallen
+  double fall_height = 0.18;  // m: torso origin below this = fallen
+  std::string file;           // where it was written, for errors found at build time
+  int line = 0;
+};
+
+struct TimedPush {
+  std::string robot;
+  std::string body;
+  Eigen::Vector3d force{0, 0, 0};   // N, world frame
+  Eigen::Vector3d at{0, 0, 0};      // application point in the body frame
+  double start = 0, duration = 0;   // s
+  std::string file;                 // where it was written, for errors found at build time
+  int line = 0;
+};
+
+struct SceneDescription {
+  std::string name;
+  std::string file;  // top-level file
+  PhysicsSettings physics;
+  GroundSettings ground;
+  std::vector<StaticBox> boxes;  // includes ramps
+  std::vector<UnevenPatch> uneven;
+  std::vector<RobotPlacement> robots;
+  std::vector<TimedPush> pushes;
+};
+
+}  // namespace stride::sim

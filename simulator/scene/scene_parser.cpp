@@ -1,0 +1,326 @@
+#include "simulator/scene/scene_parser.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "robot/core/error.hpp"
+#include "robot/core/xml_error.hpp"
+#include "simulator/scene/xml_element.hpp"
+
+namespace stride::sim {
+namespace {
+
+namespace fs = std::filesystem;
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+
+Eigen::Isometry3d pose_from(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = xyz;
+  t.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                   .toRotationMatrix();
+  return t;
+}
+
+class Parser {
+ public:
+  explicit Parser(SceneDescription& out) : out_(out) {}
+
+  void parse_file(const std::string& path, const XmlElement* included_from) {
+    std::ifstream in(path);
+    if (!in) {
+      if (included_from) included_from->fail("cannot open included file '" + path + "'");
+      throw Error(path + ":0: cannot open scene file");
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    parse_text(ss.str(), path, included_from);
+  }
+
+  void parse_text(const std::string& text, const std::string& path, const XmlElement* included_from) {
+    const std::string canonical = fs::weakly_canonical(fs::path(path)).string();
+    if (open_files_.count(canonical)) included_from->fail("include cycle through '" + path + "'");
+    open_files_.insert(canonical);
+    // Documents stay alive while their file names are referenced by errors.
+    docs_.push_back(std::make_unique<XMLDocument>());
+    paths_.push_back(std::make_unique<std::string>(path));
+    XMLDocument& doc = *docs_.back();
+    const std::string& file = *paths_.back();
+    if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
+      throw error_at(file, doc.ErrorLineNum(), xml_error_text(doc));
+    const XMLElement* root = doc.RootElement();
+    if (!root || std::string_view(root->Name()) != "scene")
+      throw error_at(file, root ? root->GetLineNum() : 1, "expected <scene> as the root element");
+    XmlElement scene(root, file);
+    scene.allow_only({"name"});
+    if (out_.name.empty()) out_.name = scene.text_or("name", fs::path(path).stem().string());
+    for (const XMLElement* c = root->FirstChildElement(); c; c = c->NextSiblingElement())
+      element(XmlElement(c, file));
+    open_files_.erase(canonical);
+  }
+
+ private:
+  std::string resolve(const XmlElement& e, const std::string& rel) const {
+    fs::path p(rel);
+    if (p.is_relative()) p = fs::path(e.file()).parent_path() / p;
+    return p.lexically_normal().string();
+  }
+
+  void element(const XmlElement& e) {
+    const std::string_view n = e.name();
+    if (n == "physics") physics(e);
+    else if (n == "ground") ground(e);
+    else if (n == "box") box(e);
+    else if (n == "ramp") ramp(e);
+    else if (n == "uneven") uneven(e);
+    else if (n == "robot") robot(e);
+    else if (n == "push") push(e);
+    else if (n == "include") {
+      e.allow_only({"file"});
+      parse_file(resolve(e, e.text("file")), &e);
+    } else
+      e.fail("unknown element (expected physics, ground, box, ramp, uneven, robot, push or include)");
+  }
+
+  void no_children(const XmlElement& e) {
+    if (e.raw()->FirstChildElement())
+      XmlElement(e.raw()->FirstChildElement(), e.file()).fail("unexpected child element of <" +
+                                                              std::string(e.name()) + ">");
+  }
+
+  void physics(const XmlElement& e) {
+    e.allow_only({"step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp", "contact_cfm",
+                  "max_contacts", "gravity", "seed"});
+    no_children(e);
+    PhysicsSettings& p = out_.physics;
+    p.step = e.number_or("step", p.step, Dimension::Time);
+    if (p.step <= 0 || p.step > 0.02) e.fail_attr("step", "expected a time in (0, 20 ms]");
+    p.solver = e.choice_or("solver", {"exact", "iterative"}, 1) == 0
+                   ? PhysicsSettings::Solver::Exact
+                   : PhysicsSettings::Solver::Iterative;
+    p.iterations = e.integer_or("iterations", p.iterations, 1, 10000);
+    p.sor = e.number_or("sor", p.sor);
+    if (p.sor <= 0 || p.sor >= 2) e.fail_attr("sor", "expected a value in (0, 2)");
+    p.erp = unit_interval(e, "erp", p.erp);
+    p.cfm = non_negative(e, "cfm", p.cfm);
+    p.contact_erp = unit_interval(e, "contact_erp", p.contact_erp);
+    p.contact_cfm = non_negative(e, "contact_cfm", p.contact_cfm);
+    p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
+    p.gravity = e.vector3_or("gravity", p.gravity);
+    p.seed = e.seed_or("seed", p.seed);
+  }
+
+  static double unit_interval(const XmlElement& e, const char* a, double fallback) {
+    const double v = e.number_or(a, fallback);
+    if (v < 0 || v > 1) e.fail_attr(a, "expected a value in [0, 1]");
+    return v;
+  }
+  static double non_negative(const XmlElement& e, const char* a, double fallback,
+                             Dimension d = Dimension::None) {
+    const double v = e.number_or(a, fallback, d);
+    if (v < 0) e.fail_attr(a, "expected a value >= 0");
+    return v;
+  }
+  static double positive(const XmlElement& e, const char* a, double fallback,
+                         Dimension d = Dimension::None) {
+    const double v = e.number_or(a, fallback, d);
+    if (v <= 0) e.fail_attr(a, "expected a value > 0");
+    return v;
+  }
+
+  void ground(const XmlElement& e) {
+    e.allow_only({"enabled", "friction"});
+    no_children(e);
+    out_.ground.enabled = e.boolean_or("enabled", true);
+    out_.ground.friction = non_negative(e, "friction", out_.ground.friction);
+  }
+
+  void box(const XmlElement& e) {
+    e.allow_only({"name", "size", "xyz", "rpy", "friction"});
+    no_children(e);
+    StaticBox b;
+    b.name = e.text_or("name", "box" + std::to_string(out_.boxes.size()));
+    b.size = e.vector3_or("size", b.size, Dimension::Length);
+    if ((b.size.array() <= 0).any()) e.fail_attr("size", "expected three lengths > 0");
+    b.pose = pose_from(e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length),
+                       e.vector3_or("rpy", Eigen::Vector3d::Zero(), Dimension::Angle));
+    b.friction = non_negative(e, "friction", b.friction);
+    b.line = e.line();
+    out_.boxes.push_back(b);
+  }
+
+  // A slab whose top surface rises along +x (after yaw) at `slope`, starting at height 0 at xyz.
+  void ramp(const XmlElement& e) {
+    e.allow_only({"name", "xyz", "length", "width", "slope", "yaw", "thickness", "friction"});
+    no_children(e);
+    StaticBox b;
+    b.name = e.text_or("name", "ramp" + std::to_string(out_.boxes.size()));
+    const double length = positive(e, "length", 1.0, Dimension::Length);
+    const double width = positive(e, "width", 1.0, Dimension::Length);
+    const double thick = positive(e, "thickness", 0.05, Dimension::Length);
+    const double slope = e.number("slope", Dimension::Angle);
+    if (std::abs(slope) >= 1.2) e.fail_attr("slope", "expected an angle below 1.2 rad");
+    const double yaw = e.number_or("yaw", 0, Dimension::Angle);
+    const Eigen::Vector3d start = e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length);
+    b.size = Eigen::Vector3d(length, width, thick);
+    // Top-surface centre lies half a length up the slope from the start edge.
+    const Eigen::Matrix3d r = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(-slope, Eigen::Vector3d::UnitY()))
+                                  .toRotationMatrix();
+    b.pose = Eigen::Isometry3d::Identity();
+    b.pose.linear() = r;
+    b.pose.translation() = start + r * Eigen::Vector3d(length / 2, 0, -thick / 2);
+    b.friction = non_negative(e, "friction", b.friction);
+    b.line = e.line();
+    out_.boxes.push_back(b);
+  }
+
+  void uneven(const XmlElement& e) {
+    e.allow_only({"name", "centre", "size", "cell", "height", "tilt", "friction", "seed"});
+    no_children(e);
+    UnevenPatch u;
+    u.name = e.text_or("name", "uneven" + std::to_string(out_.uneven.size()));
+    u.centre = e.vector2_or("centre", u.centre, Dimension::Length);
+    u.size = e.vector2_or("size", u.size, Dimension::Length);
+    if ((u.size.array() <= 0).any()) e.fail_attr("size", "expected two lengths > 0");
+    u.cell = positive(e, "cell", u.cell, Dimension::Length);
+    if (u.size.x() / u.cell * u.size.y() / u.cell > 200000)
+      e.fail_attr("cell", "too many tiles (more than 200000); use a larger cell");
+    u.max_height = non_negative(e, "height", u.max_height, Dimension::Length);
+    u.max_tilt = non_negative(e, "tilt", u.max_tilt, Dimension::Angle);
+    if (u.max_tilt > 0.5) e.fail_attr("tilt", "expected at most 0.5 rad");
+    u.friction = non_negative(e, "friction", u.friction);
+    u.seed = e.seed_or("seed", 0);
+    out_.uneven.push_back(u);
+  }
+
+  void robot(const XmlElement& e) {
+    e.allow_only({"name", "urdf", "devices", "xyz", "rpy", "fixed", "stiffness", "fall_tilt",
+                  "fall_height"});
+    RobotPlacement r;
+    r.file = e.file();
+    r.line = e.line();
+    r.name = e.text_or("name", "robot" + std::to_string(out_.robots.size()));
+    for (const auto& other : out_.robots)
+      if (other.name == r.name) e.fail_attr("name", "a robot named '" + r.name + "' already exists");
+    r.urdf = resolve(e, e.text("urdf"));
+    r.devices = e.has("devices") ? resolve(e, e.text("devices")) : std::string();
+    if (e.has("xyz")) {
+      std::istringstream in(e.text("xyz"));
+      std::string xs, ys, zs, extra;
+      in >> xs >> ys >> zs >> extra;
+      if (zs.empty() || !extra.empty())
+        e.fail_attr("xyz", "expected 'x y z' lengths, z may be 'auto'");
+      try {
+        r.xyz.x() = parse_quantity(xs, Dimension::Length);
+        r.xyz.y() = parse_quantity(ys, Dimension::Length);
+        r.auto_height = zs == "auto";
+        if (!r.auto_height) r.xyz.z() = parse_quantity(zs, Dimension::Length);
+      } catch (const std::invalid_argument& ex) {
+        e.fail_attr("xyz", ex.what());
+      }
+    }
+    r.rpy = e.vector3_or("rpy", r.rpy, Dimension::Angle);
+    r.fixed_base = e.boolean_or("fixed", false);
+    r.stiffness = e.number_or("stiffness", 1.0);
+    if (r.stiffness < 0 || r.stiffness > 1) e.fail_attr("stiffness", "expected a value in [0, 1]");
+    r.fall_tilt = positive(e, "fall_tilt", r.fall_tilt, Dimension::Angle);
+    r.fall_height = non_negative(e, "fall_height", r.fall_height, Dimension::Length);
+    for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      XmlElement child(c, e.file());
+      const std::string_view n = child.name();
+      if (n == "joints") {
+        // Attributes are joint names; they are checked against the URDF when the world is built.
+        r.joints_line = child.line();
+        for (const tinyxml2::XMLAttribute* a = c->FirstAttribute(); a; a = a->Next())
+          r.joints[a->Name()] = child.number(a->Name(), Dimension::Angle);
+      } else if (n == "sensors") {
+        child.allow_only({"noise", "delay", "quantise"});
+        r.sensors.noise = child.boolean_or("noise", true);
+        r.sensors.delay = child.boolean_or("delay", true);
+        r.sensors.quantise = child.boolean_or("quantise", true);
+      } else if (n == "controller") {
+        child.allow_only({});
+        r.has_controller = true;
+        controller(child, r.controller);
+      } else {
+        child.fail("unknown element in <robot> (expected joints, sensors or controller)");
+      }
+    }
+    out_.robots.push_back(std::move(r));
+  }
+
+  void controller(const XmlElement& e, ControllerConfig& cfg) {
+    for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      XmlElement child(c, e.file());
+      if (child.name() == "provider") {
+        child.allow_only({"representation", "module"});
+        cfg.providers[child.text("representation")] = child.text("module");
+      } else if (child.name() == "parameter") {
+        child.allow_only({"module", "field", "value"});
+        cfg.parameters[child.text("module") + "." + child.text("field")] = child.text("value");
+      } else {
+        child.fail("unknown element in <controller> (expected provider or parameter)");
+      }
+    }
+  }
+
+  void push(const XmlElement& e) {
+    e.allow_only({"robot", "body", "force", "at", "start", "duration"});
+    no_children(e);
+    TimedPush p;
+    p.robot = e.text("robot");
+    p.body = e.text("body");
+    p.force = e.vector3_or("force", p.force, Dimension::Force);
+    if (!e.has("force")) e.fail("missing attribute 'force'");
+    p.at = e.vector3_or("at", p.at, Dimension::Length);
+    p.start = non_negative(e, "start", 0, Dimension::Time);
+    p.duration = positive(e, "duration", 0.1, Dimension::Time);
+    p.file = e.file();
+    p.line = e.line();
+    out_.pushes.push_back(p);
+  }
+
+  SceneDescription& out_;
+  std::set<std::string> open_files_;
+  std::vector<std::unique_ptr<XMLDocument>> docs_;
+  std::vector<std::unique_ptr<std::string>> paths_;
+};
+
+// Checks that need the whole scene: pushes name robots that exist.
+void check_references(const SceneDescription& s) {
+  for (const TimedPush& p : s.pushes) {
+    bool found = false;
+    for (const auto& r : s.robots) found = found || r.name == p.robot;
+    if (!found)
+      throw error_at(p.file, p.line,
+                     "<push>: attribute 'robot': no robot named '" + p.robot + "' in the scene");
+  }
+}
+
+}  // namespace
+
+SceneDescription parse_scene_file(const std::string& path) {
+  SceneDescription s;
+  s.file = path;
+  Parser p(s);
+  p.parse_file(path, nullptr);
+  check_references(s);
+  return s;
+}
+
+SceneDescription parse_scene_text(const std::string& text, const std::string& virtual_path) {
+  SceneDescription s;
+  s.file = virtual_path;
+  Parser p(s);
+  p.parse_text(text, virtual_path, nullptr);
+  check_references(s);
+  return s;
+}
+
+}  // namespace stride::sim

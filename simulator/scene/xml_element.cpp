@@ -1,0 +1,140 @@
+#include "simulator/scene/xml_element.hpp"
+
+#include <charconv>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "robot/core/error.hpp"
+
+namespace stride::sim {
+
+void XmlElement::fail(const std::string& message) const {
+  throw error_at(file_, line(), "<" + std::string(name()) + ">: " + message);
+}
+
+void XmlElement::fail_attr(const char* attr, const std::string& message) const {
+  fail("attribute '" + std::string(attr) + "': " + message);
+}
+
+void XmlElement::allow_only(std::initializer_list<std::string_view> allowed) const {
+  for (const tinyxml2::XMLAttribute* a = e_->FirstAttribute(); a; a = a->Next()) {
+    bool ok = false;
+    for (auto n : allowed) ok = ok || n == a->Name();
+    if (!ok) {
+      std::string list;
+      for (auto n : allowed) list += (list.empty() ? "" : ", ") + std::string(n);
+      fail("unknown attribute '" + std::string(a->Name()) + "' (expected " +
+           (list.empty() ? std::string("none") : list) + ")");
+    }
+  }
+}
+
+std::string XmlElement::text(const char* attr) const {
+  const char* v = e_->Attribute(attr);
+  if (!v) fail("missing attribute '" + std::string(attr) + "'");
+  return v;
+}
+
+std::string XmlElement::text_or(const char* attr, const std::string& fallback) const {
+  const char* v = e_->Attribute(attr);
+  return v ? std::string(v) : fallback;
+}
+
+double XmlElement::number(const char* attr, Dimension d) const {
+  const std::string t = text(attr);
+  try {
+    return parse_quantity(t, d);
+  } catch (const std::invalid_argument& ex) {
+    fail_attr(attr, ex.what());
+  }
+}
+
+double XmlElement::number_or(const char* attr, double fallback, Dimension d) const {
+  return has(attr) ? number(attr, d) : fallback;
+}
+
+int XmlElement::integer_or(const char* attr, int fallback, int min, int max) const {
+  if (!has(attr)) return fallback;
+  const std::string t = text(attr);
+  int v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size() || v < min || v > max)
+    fail_attr(attr, "'" + t + "' (expected an integer in [" + std::to_string(min) + ", " +
+                        std::to_string(max) + "])");
+  return v;
+}
+
+std::uint64_t XmlElement::seed_or(const char* attr, std::uint64_t fallback) const {
+  if (!has(attr)) return fallback;
+  const std::string t = text(attr);
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (ec != std::errc() || end != t.data() + t.size())
+    fail_attr(attr, "'" + t + "' (expected a non-negative integer seed)");
+  return v;
+}
+
+bool XmlElement::boolean_or(const char* attr, bool fallback) const {
+  if (!has(attr)) return fallback;
+  const std::string t = text(attr);
+  if (t == "true" || t == "on" || t == "1") return true;
+  if (t == "false" || t == "off" || t == "0") return false;
+  fail_attr(attr, "'" + t + "' (expected true/false or on/off)");
+}
+
+namespace {
+std::vector<std::string> split_words(const std::string& s) {
+  std::istringstream in(s);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+}  // namespace
+
+Eigen::Vector3d XmlElement::vector3_or(const char* attr, const Eigen::Vector3d& fallback,
+                                       Dimension d) const {
+  if (!has(attr)) return fallback;
+  const auto words = split_words(text(attr));
+  if (words.size() != 3)
+    fail_attr(attr, "'" + text(attr) + "' (expected three values, each " +
+                        std::string(dimension_name(d)) + ")");
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) try {
+      v[i] = parse_quantity(words[i], d);
+    } catch (const std::invalid_argument& ex) {
+      fail_attr(attr, ex.what());
+    }
+  return v;
+}
+
+Eigen::Vector2d XmlElement::vector2_or(const char* attr, const Eigen::Vector2d& fallback,
+                                       Dimension d) const {
+  if (!has(attr)) return fallback;
+  const auto words = split_words(text(attr));
+  if (words.size() != 2)
+    fail_attr(attr, "'" + text(attr) + "' (expected two values, each " +
+                        std::string(dimension_name(d)) + ")");
+  Eigen::Vector2d v;
+  for (int i = 0; i < 2; ++i) try {
+      v[i] = parse_quantity(words[i], d);
+    } catch (const std::invalid_argument& ex) {
+      fail_attr(attr, ex.what());
+    }
+  return v;
+}
+
+int XmlElement::choice_or(const char* attr, std::initializer_list<std::string_view> choices,
+                          int fallback) const {
+  if (!has(attr)) return fallback;
+  const std::string t = text(attr);
+  int i = 0;
+  std::string list;
+  for (auto c : choices) {
+    if (c == t) return i;
+    list += (i++ ? ", " : "") + std::string(c);
+  }
+  fail_attr(attr, "'" + t + "' (expected one of " + list + ")");
+}
+
+}  // namespace stride::sim

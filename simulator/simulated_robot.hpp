@@ -1,0 +1,77 @@
+#pragma once
+// One robot in the world with its devices; it is the in-process hardware link its controller
+// talks to (the same interface LoLA provides on a real NAO).
+#include <array>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "robot/hal/hardware_link.hpp"
+#include "robot/model/robot_model.hpp"
+#include "simulator/devices/device_description.hpp"
+#include "simulator/devices/fsr_device.hpp"
+#include "simulator/devices/imu_device.hpp"
+#include "simulator/devices/servo_bank.hpp"
+#include "simulator/scene/scene_description.hpp"
+#include "simulator/world/physics_world.hpp"
+#include "simulator/world/robot_body.hpp"
+
+namespace stride::sim {
+
+struct TorsoPose {
+  double x = 0, y = 0, z = 0, roll = 0, pitch = 0, yaw = 0;
+};
+
+class SimulatedRobot : public hal::HardwareLink {
+ public:
+  // Loads the URDF and device file named by `placement`; throws stride::Error naming file:line.
+  SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placement, int index,
+                 std::uint64_t scene_seed);
+
+  // hal::HardwareLink: in process, the frame is ready whenever the simulation says so.
+  bool read(hal::SensorFrame& out) override;
+  void write(const hal::ActuatorFrame& in) override;
+  double period() const override { return devices_.period; }
+  std::string name() const override { return placement_.name; }
+
+  void before_physics_step();
+  void after_physics_step(const PhysicsWorld& world);
+  // Closes the control frame that ends at `time`: samples every sensor.
+  void sample_sensors(double time, const Eigen::Vector3d& gravity);
+
+  const model::RobotModel& model() const { return *model_; }
+  const RobotBody& body() const { return *body_; }
+  const DeviceDescription& devices() const { return devices_; }
+  const RobotPlacement& placement() const { return placement_; }
+  const hal::SensorFrame& latest_sensors() const { return delivered_; }
+  const hal::ActuatorFrame& latest_commands() const { return commands_; }
+  SensorSwitches& sensor_switches() { return switches_; }
+
+  TorsoPose torso_pose() const;
+  bool fallen() const;
+  // Model joint index of each LoLA joint, or -1 (hands).
+  int joint_of_lola(int lola) const { return lola_to_joint_[lola]; }
+
+ private:
+  void apply_commands();
+
+  RobotPlacement placement_;
+  int index_;
+  std::unique_ptr<model::RobotModel> model_;
+  DeviceDescription devices_;
+  std::unique_ptr<RobotBody> body_;
+  std::unique_ptr<ServoBank> servos_;
+  std::optional<ImuDevice> imu_;
+  std::vector<FsrDevice> fsrs_;
+  NoiseSource encoder_noise_;
+  SensorSwitches switches_;
+  std::array<int, hal::kNumJoints> lola_to_joint_{};
+  hal::ActuatorFrame commands_;
+  std::deque<ImuReading> imu_queue_;
+  hal::SensorFrame delivered_;
+  std::vector<double> currents_;
+};
+
+}  // namespace stride::sim

@@ -1,0 +1,172 @@
+#include "simulator/simulation.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "robot/core/error.hpp"
+#include "simulator/scene/scene_parser.hpp"
+
+namespace stride::sim {
+
+Simulation::Simulation(SceneDescription scene) : scene_(std::move(scene)) { build(); }
+
+Simulation::~Simulation() {
+  robots_.clear();  // bodies belong to the world; drop robots before it
+  world_.reset();
+}
+
+std::unique_ptr<Simulation> Simulation::from_file(const std::string& path,
+                                                  std::optional<std::uint64_t> seed) {
+  SceneDescription scene = parse_scene_file(path);
+  if (seed) scene.physics.seed = *seed;
+  return std::make_unique<Simulation>(std::move(scene));
+}
+
+void Simulation::build() {
+  auto world = std::make_unique<PhysicsWorld>(scene_.physics, scene_.ground);
+  for (const auto& b : scene_.boxes) world->add_static_box(b);
+  for (size_t i = 0; i < scene_.uneven.size(); ++i) {
+    const auto& u = scene_.uneven[i];
+    world->add_uneven_patch(u, u.seed ? u.seed : scene_.physics.seed * 7919 + i + 1);
+  }
+  std::vector<std::unique_ptr<SimulatedRobot>> robots;
+  std::vector<int> steps_per_frame;
+  for (size_t i = 0; i < scene_.robots.size(); ++i) {
+    const auto& placement = scene_.robots[i];
+    robots.push_back(std::make_unique<SimulatedRobot>(*world, placement, static_cast<int>(i),
+                                                      scene_.physics.seed));
+    const double ratio = robots.back()->period() / scene_.physics.step;
+    const int n = static_cast<int>(std::lround(ratio));
+    if (n < 1 || std::abs(ratio - n) > 1e-9)
+      throw error_at(placement.file, placement.line,
+                     "<robot>: control period " + std::to_string(robots.back()->period()) +
+                         " s is not a whole number of physics steps of " +
+                         std::to_string(scene_.physics.step) + " s");
+    steps_per_frame.push_back(n);
+  }
+  std::vector<ActivePush> pushes;
+  for (const auto& p : scene_.pushes) {
+    int r = -1;
+    for (size_t i = 0; i < scene_.robots.size(); ++i)
+      if (scene_.robots[i].name == p.robot) r = static_cast<int>(i);
+    const int link = robots[r]->model().link_index(p.body);
+    if (link < 0)
+      throw error_at(p.file, p.line, "<push>: attribute 'body': robot '" + p.robot +
+                                         "' has no link named '" + p.body + "'");
+    pushes.push_back({r, link, p.force, p.at, p.start, p.start + p.duration});
+  }
+  // Everything built: only now replace the previous state.
+  robots_.clear();
+  world_ = std::move(world);
+  robots_ = std::move(robots);
+  steps_per_frame_ = std::move(steps_per_frame);
+  controllers_.resize(robots_.size());
+  pushes_ = std::move(pushes);
+  steps_ = 0;
+}
+
+void Simulation::reset() { build(); }
+
+int Simulation::robot_index(const std::string& name) const {
+  for (size_t i = 0; i < robots_.size(); ++i)
+    if (robots_[i]->name() == name) return static_cast<int>(i);
+  return -1;
+}
+
+void Simulation::push(const std::string& robot, const std::string& link,
+                      const Eigen::Vector3d& force, const Eigen::Vector3d& at, double duration) {
+  const int r = robot_index(robot);
+  if (r < 0) throw Error("no robot named '" + robot + "'");
+  const int l = robots_[r]->model().link_index(link);
+  if (l < 0) throw Error("robot '" + robot + "' has no link named '" + link + "'");
+  if (!(duration > 0)) throw Error("push duration must be > 0 s");
+  pushes_.push_back({r, l, force, at, time(), time() + duration});
+}
+
+void Simulation::step() {
+  const double t = time();
+  for (const ActivePush& p : pushes_) {
+    if (t < p.start - 1e-12 || t >= p.end - 1e-12) continue;
+    const auto& body = robots_[p.robot]->body();
+    const Eigen::Vector3d at = p.at - body.model().links[p.link].inertial.com;
+    dBodyAddForceAtRelPos(body.body(p.link), p.force.x(), p.force.y(), p.force.z(), at.x(), at.y(),
+                          at.z());
+  }
+  for (auto& r : robots_) r->before_physics_step();
+  world_->step();
+  ++steps_;
+  for (auto& r : robots_) r->after_physics_step(*world_);
+  check_finite();
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (steps_ % static_cast<std::uint64_t>(steps_per_frame_[i]) != 0) continue;
+    robots_[i]->sample_sensors(time(), scene_.physics.gravity);
+    if (controllers_[i]) controllers_[i](*robots_[i]);
+  }
+}
+
+void Simulation::run_for(double seconds) {
+  const auto n = static_cast<std::uint64_t>(std::llround(seconds / scene_.physics.step));
+  for (std::uint64_t k = 0; k < n; ++k) step();
+}
+
+void Simulation::check_finite() const {
+  for (const auto& r : robots_) {
+    const auto& body = r->body();
+    for (int l = 0; l < body.link_count(); ++l) {
+      const dReal* p = dBodyGetPosition(body.body(l));
+      const dReal* v = dBodyGetLinearVel(body.body(l));
+      const dReal* w = dBodyGetAngularVel(body.body(l));
+      const char* what = nullptr;
+      for (int k = 0; k < 3 && !what; ++k) {
+        if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(w[k]))
+          what = "a non-finite state";
+        else if (std::abs(v[k]) > 1e3 || std::abs(w[k]) > 1e4 || std::abs(p[k]) > 1e5)
+          what = "an exploding state";
+      }
+      if (what) {
+        std::ostringstream msg;
+        msg << "physics diverged at t=" << time() << " s: robot '" << r->name() << "' link '"
+            << body.model().links[l].name << "' has " << what
+            << " (try a smaller step, more solver iterations or a larger cfm)";
+        throw Error(msg.str());
+      }
+    }
+  }
+}
+
+namespace {
+struct Fnv {
+  std::uint64_t h = 1469598103934665603ull;
+  void bytes(const void* p, size_t n) {
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+  void reals(const dReal* v, int n) { bytes(v, sizeof(dReal) * n); }
+};
+}  // namespace
+
+std::uint64_t Simulation::state_hash() const {
+  Fnv f;
+  f.bytes(&steps_, sizeof steps_);
+  for (const auto& r : robots_) {
+    const auto& body = r->body();
+    for (int l = 0; l < body.link_count(); ++l) {
+      dBodyID b = body.body(l);
+      f.reals(dBodyGetPosition(b), 3);
+      f.reals(dBodyGetQuaternion(b), 4);
+      f.reals(dBodyGetLinearVel(b), 3);
+      f.reals(dBodyGetAngularVel(b), 3);
+    }
+    const hal::SensorFrame& s = r->latest_sensors();
+    f.bytes(s.position.data(), sizeof(double) * s.position.size());
+    f.bytes(s.current.data(), sizeof(double) * s.current.size());
+    f.bytes(s.accelerometer.data(), sizeof(double) * 3);
+    f.bytes(s.gyroscope.data(), sizeof(double) * 3);
+    f.bytes(s.angles.data(), sizeof(double) * 2);
+    f.bytes(s.fsr.data(), sizeof(double) * s.fsr.size());
+  }
+  return f.h;
+}
+
+}  // namespace stride::sim

@@ -1,0 +1,74 @@
+#pragma once
+// A scene brought to life: the physics world, its robots and their devices, timed pushes, and the
+// control-frame clock that controllers attach to.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "simulator/scene/scene_description.hpp"
+#include "simulator/simulated_robot.hpp"
+#include "simulator/world/physics_world.hpp"
+
+namespace stride::sim {
+
+struct ActivePush {
+  int robot = 0;
+  int link = 0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d at = Eigen::Vector3d::Zero();  // link frame
+  double start = 0, end = 0;
+};
+
+class Simulation {
+ public:
+  // Builds everything from `scene`; throws stride::Error (file:line) and leaves nothing behind.
+  explicit Simulation(SceneDescription scene);
+  ~Simulation();
+
+  static std::unique_ptr<Simulation> from_file(const std::string& path,
+                                               std::optional<std::uint64_t> seed = std::nullopt);
+
+  // Rebuilds the world from the same description: the same run follows, bit for bit.
+  void reset();
+
+  // One physics step; control frames close (sensors sampled, controllers called) on their ticks.
+  void step();
+  void run_for(double seconds);
+
+  double time() const { return static_cast<double>(steps_) * scene_.physics.step; }
+  std::uint64_t steps() const { return steps_; }
+  const SceneDescription& scene() const { return scene_; }
+  PhysicsWorld& world() { return *world_; }
+  int robot_count() const { return static_cast<int>(robots_.size()); }
+  SimulatedRobot& robot(int i) { return *robots_[i]; }
+  const SimulatedRobot& robot(int i) const { return *robots_[i]; }
+  int robot_index(const std::string& name) const;  // -1 if absent
+
+  // Called at every control frame of robot `i`, after its sensors are sampled.
+  using Controller = std::function<void(SimulatedRobot&)>;
+  void set_controller(int robot, Controller c) { controllers_[robot] = std::move(c); }
+
+  // A force on a robot's link for `duration` seconds from now. Throws if the link is unknown.
+  void push(const std::string& robot, const std::string& link, const Eigen::Vector3d& force,
+            const Eigen::Vector3d& at, double duration);
+
+  // FNV-1a over every body's state and the robots' latest sensor frames.
+  std::uint64_t state_hash() const;
+
+ private:
+  void build();
+  void check_finite() const;
+
+  SceneDescription scene_;
+  std::unique_ptr<PhysicsWorld> world_;
+  std::vector<std::unique_ptr<SimulatedRobot>> robots_;
+  std::vector<int> steps_per_frame_;
+  std::vector<Controller> controllers_;
+  std::vector<ActivePush> pushes_;
+  std::uint64_t steps_ = 0;
+};
+
+}  // namespace stride::sim

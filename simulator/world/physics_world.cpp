@@ -1,0 +1,140 @@
+#include "simulator/world/physics_world.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "simulator/devices/noise_source.hpp"
+#include "simulator/world/ode_context.hpp"
+
+namespace stride::sim {
+namespace {
+constexpr size_t kMaxRecordedContacts = 4096;
+}
+
+PhysicsWorld::PhysicsWorld(const PhysicsSettings& physics, const GroundSettings& ground)
+    : physics_(physics) {
+  ensure_ode_initialised();
+  world_ = dWorldCreate();
+  dWorldSetGravity(world_, physics.gravity.x(), physics.gravity.y(), physics.gravity.z());
+  dWorldSetERP(world_, physics.erp);
+  dWorldSetCFM(world_, physics.cfm);
+  dWorldSetQuickStepNumIterations(world_, physics.iterations);
+  dWorldSetQuickStepW(world_, physics.sor);
+  dWorldSetAutoDisableFlag(world_, 0);
+  dWorldSetContactSurfaceLayer(world_, 0.0005);
+  robot_space_ = dHashSpaceCreate(nullptr);
+  static_space_ = dHashSpaceCreate(nullptr);
+  contact_group_ = dJointGroupCreate(0);
+  feedback_.resize(kMaxRecordedContacts);
+  rand_state_ = static_cast<unsigned long>(physics.seed);
+  if (ground.enabled) {
+    dGeomID plane = dCreatePlane(static_space_, 0, 0, 1, 0);
+    dGeomSetData(plane, new_geom_info({-1, -1, ground.friction}));
+    ++static_geoms_;
+  }
+}
+
+PhysicsWorld::~PhysicsWorld() {
+  dJointGroupDestroy(contact_group_);
+  dSpaceDestroy(robot_space_);  // spaces destroy their geoms (cleanup mode on by default)
+  dSpaceDestroy(static_space_);
+  dWorldDestroy(world_);
+}
+
+GeomInfo* PhysicsWorld::new_geom_info(const GeomInfo& info) {
+  infos_.push_back(info);
+  return &infos_.back();
+}
+
+void PhysicsWorld::add_static_box(const StaticBox& box) {
+  dGeomID g = dCreateBox(static_space_, box.size.x(), box.size.y(), box.size.z());
+  dGeomSetPosition(g, box.pose.translation().x(), box.pose.translation().y(),
+                   box.pose.translation().z());
+  dMatrix3 r;
+  const Eigen::Matrix3d m = box.pose.linear();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) r[i * 4 + j] = m(i, j);
+    r[i * 4 + 3] = 0;
+  }
+  dGeomSetRotation(g, r);
+  dGeomSetData(g, new_geom_info({-1, -1, box.friction}));
+  ++static_geoms_;
+}
+
+void PhysicsWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
+  NoiseSource rng(seed);
+  const int nx = std::max(1, static_cast<int>(patch.size.x() / patch.cell + 0.5));
+  const int ny = std::max(1, static_cast<int>(patch.size.y() / patch.cell + 0.5));
+  const double thickness = 0.02;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) {
+      StaticBox tile;
+      tile.size = Eigen::Vector3d(patch.cell, patch.cell, thickness);
+      tile.friction = patch.friction;
+      const double top = rng.uniform(0, patch.max_height);
+      const double roll = rng.uniform(-patch.max_tilt, patch.max_tilt);
+      const double pitch = rng.uniform(-patch.max_tilt, patch.max_tilt);
+      tile.pose = Eigen::Isometry3d::Identity();
+      tile.pose.linear() = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                            Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                               .toRotationMatrix();
+      const Eigen::Vector3d centre(patch.centre.x() - patch.size.x() / 2 + (i + 0.5) * patch.cell,
+                                   patch.centre.y() - patch.size.y() / 2 + (j + 0.5) * patch.cell,
+                                   top - thickness / 2);
+      tile.pose.translation() = centre;
+      add_static_box(tile);
+    }
+}
+
+void PhysicsWorld::near_callback(void* data, dGeomID g1, dGeomID g2) {
+  static_cast<PhysicsWorld*>(data)->collide_pair(g1, g2);
+}
+
+void PhysicsWorld::collide_pair(dGeomID g1, dGeomID g2) {
+  dBodyID b1 = dGeomGetBody(g1);
+  dBodyID b2 = dGeomGetBody(g2);
+  if (!b1 && !b2) return;
+  if (b1 && b2 && dAreConnectedExcluding(b1, b2, dJointTypeContact)) return;  // adjacent links
+  const auto* i1 = static_cast<const GeomInfo*>(dGeomGetData(g1));
+  const auto* i2 = static_cast<const GeomInfo*>(dGeomGetData(g2));
+  if (i1->robot >= 0 && i1->robot == i2->robot && self_filter_ && !self_filter_(*i1, *i2)) return;
+  const int max_contacts = std::min(physics_.max_contacts, 64);
+  dContactGeom geoms[64];
+  const int n = dCollide(g1, g2, max_contacts, geoms, sizeof(dContactGeom));
+  for (int k = 0; k < n; ++k) {
+    dContact c{};
+    c.surface.mode = dContactApprox1 | dContactSoftERP | dContactSoftCFM;
+    c.surface.mu = std::min(i1->friction, i2->friction);
+    c.surface.soft_erp = physics_.contact_erp;
+    c.surface.soft_cfm = physics_.contact_cfm;
+    c.geom = geoms[k];
+    dJointID j = dJointCreateContact(world_, contact_group_, &c);
+    dJointAttach(j, b1, b2);
+    if (contacts_.size() < feedback_.size()) {
+      ContactRecord rec;
+      rec.a = i1;
+      rec.b = i2;
+      for (int d = 0; d < 3; ++d) rec.position[d] = geoms[k].pos[d];
+      rec.feedback = &feedback_[contacts_.size()];
+      dJointSetFeedback(j, rec.feedback);
+      contacts_.push_back(rec);
+    }
+  }
+}
+
+void PhysicsWorld::step() {
+  contacts_.clear();
+  dSpaceCollide(robot_space_, this, &near_callback);
+  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), reinterpret_cast<dGeomID>(static_space_),
+                 this, &near_callback);
+  // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each other.
+  dRandSetSeed(rand_state_);
+  if (physics_.solver == PhysicsSettings::Solver::Exact)
+    dWorldStep(world_, physics_.step);
+  else
+    dWorldQuickStep(world_, physics_.step);
+  rand_state_ = dRandGetSeed();
+  dJointGroupEmpty(contact_group_);
+}
+
+}  // namespace stride::sim

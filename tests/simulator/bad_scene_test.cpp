@@ -1,0 +1,103 @@
+// Bad input: one line naming file:line and what was expected; nothing is built.
+#include <fstream>
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "robot/core/error.hpp"
+#include "tests/simulator/sim_test_util.hpp"
+
+namespace stride {
+namespace {
+
+// Builds the scene and returns the error message (empty if it loaded).
+std::string load_error(const std::string& xml) {
+  try {
+    test::scene_from_text(xml, "bad.xml");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_error(const std::string& xml, const std::string& file_line, const std::string& part) {
+  const std::string msg = load_error(xml);
+  ASSERT_FALSE(msg.empty()) << "scene loaded but should not have";
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
+  EXPECT_NE(msg.find(file_line), std::string::npos) << msg;
+  EXPECT_NE(msg.find(part), std::string::npos) << msg;
+}
+
+const std::string kNao = R"(urdf="../../scenes/robots/nao/nao.urdf")";
+
+TEST(BadScene, MalformedXml) {
+  expect_error("<scene>\n<ground friction=\"0.8\">\n</scene>", "bad.xml:2", "malformed XML (mismatched element)");
+}
+
+TEST(BadScene, UnknownElement) {
+  expect_error("<scene>\n<grund/>\n</scene>", "bad.xml:2", "unknown element");
+}
+
+TEST(BadScene, UnknownAttribute) {
+  expect_error("<scene>\n<ground frction=\"0.3\"/>\n</scene>", "bad.xml:2",
+               "unknown attribute 'frction'");
+}
+
+TEST(BadScene, MissingUrdf) {
+  expect_error("<scene>\n<robot name=\"r\" urdf=\"nowhere.urdf\"/>\n</scene>", "bad.xml:2",
+               "cannot open URDF");
+}
+
+TEST(BadScene, UrdfJointWithoutLimits) {
+  expect_error("<scene>\n<robot urdf=\"no_limits.urdf\"/>\n</scene>", "no_limits.urdf:9",
+               "revolute joint without <limit>");
+}
+
+TEST(BadScene, NegativeMass) {
+  expect_error("<scene>\n<robot urdf=\"negative_mass.urdf\"/>\n</scene>", "negative_mass.urdf:4",
+               "negative mass");
+}
+
+TEST(BadScene, NanInAnAttribute) {
+  expect_error("<scene>\n<physics step=\"nan\"/>\n</scene>", "bad.xml:2", "step");
+  expect_error("<scene>\n<box size=\"1 NaN 1\"/>\n</scene>", "bad.xml:2", "size");
+}
+
+TEST(BadScene, PushOnMissingBody) {
+  expect_error("<scene>\n<robot name=\"nao\" " + kNao +
+                   "/>\n<push robot=\"nao\" body=\"Tail\" force=\"1 0 0\"/>\n</scene>",
+               "bad.xml:3", "no link named 'Tail'");
+}
+
+TEST(BadScene, PushOnMissingRobot) {
+  expect_error("<scene>\n<push robot=\"ghost\" body=\"torso\" force=\"1 0 0\"/>\n</scene>",
+               "bad.xml:2", "no robot named 'ghost'");
+}
+
+TEST(BadScene, UnitOfTheWrongKind) {
+  expect_error("<scene>\n<physics step=\"5deg\"/>\n</scene>", "bad.xml:2", "expected a time");
+}
+
+TEST(BadScene, UnknownJointInInitialPose) {
+  expect_error("<scene>\n<robot " + kNao + ">\n<joints LKnee=\"0.5\"/>\n</robot>\n</scene>",
+               "bad.xml:3", "'LKnee' is not a movable joint");
+}
+
+TEST(BadScene, IncludeCycle) {
+  expect_error("<scene>\n<include file=\"cycle_a.xml\"/>\n</scene>", "cycle_b.xml:2",
+               "include cycle");
+}
+
+TEST(BadScene, MeshCollisionIsRejectedClearly) {
+  expect_error("<scene>\n<robot urdf=\"mesh.urdf\"/>\n</scene>", "mesh.urdf:6",
+               "mesh collision geometry is not supported");
+}
+
+TEST(BadScene, IncludeReusesAFile) {
+  auto sim = test::scene_from_text("<scene>\n<include file=\"flat_physics.xml\"/>\n</scene>");
+  EXPECT_EQ(sim->scene().physics.iterations, 33);
+  EXPECT_DOUBLE_EQ(sim->scene().physics.step, 0.002);
+}
+
+}  // namespace
+}  // namespace stride

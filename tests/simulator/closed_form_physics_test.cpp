@@ -1,0 +1,105 @@
+// The physics engine against closed-form mechanics: free fall, a pendulum, friction on a ramp.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "tests/simulator/sim_test_util.hpp"
+
+namespace stride {
+namespace {
+
+constexpr double kG = 9.81;
+
+TEST(ClosedFormPhysics, FreeFallFollowsHalfGTSquared) {
+  auto sim = test::scene_from_text(R"(<scene><ground enabled="false"/>
+    <robot name="ball" urdf="sphere.urdf" xyz="0 0 10"/></scene>)");
+  const double t = 1.0;
+  sim->run_for(t);
+  const double z = sim->robot(0).torso_pose().z;
+  // Semi-implicit Euler: z_n = z0 - g h^2 n (n + 1) / 2 exactly; closed form within g t h.
+  const double h = sim->scene().physics.step;
+  const double n = t / h;
+  EXPECT_NEAR(z, 10 - kG * h * h * n * (n + 1) / 2, 1e-9);
+  EXPECT_NEAR(z, 10 - kG * t * t / 2, kG * t * h);
+}
+
+double pendulum_energy(const sim::Simulation& s) {
+  const auto& body = s.robot(0).body();
+  const int bob = body.model().link_index("bob");
+  const dReal* v = dBodyGetLinearVel(body.body(bob));
+  const dReal* w = dBodyGetAngularVel(body.body(bob));
+  const double m = 0.5, i = 0.0002;
+  const double ke = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+                    0.5 * i * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  return ke + m * kG * body.link_com(bob).z();
+}
+
+TEST(ClosedFormPhysics, PendulumPeriodAndEnergyDrift) {
+  auto sim = test::scene_from_text(R"(<scene><ground enabled="false"/>
+    <physics solver="exact"/>
+    <robot name="p" urdf="pendulum.urdf" xyz="0 0 1" fixed="true"><joints swing="0.05"/></robot></scene>)");
+  const double m = 0.5, d = 0.4, i_pivot = 0.0002 + m * d * d;
+  const double expected = 2 * std::numbers::pi * std::sqrt(i_pivot / (m * kG * d));
+  const double e0 = pendulum_energy(*sim);
+  const auto& body = sim->robot(0).body();
+  double prev = body.joint_position(0), first = -1, last = -1;
+  int crossings = 0;
+  double max_drift = 0;
+  while (sim->time() < 10.0) {
+    sim->step();
+    const double q = body.joint_position(0);
+    if (prev > 0 && q <= 0) {  // downward zero crossing, interpolated
+      const double tc = sim->time() - sim->scene().physics.step * q / (q - prev);
+      if (first < 0) first = tc;
+      last = tc;
+      ++crossings;
+    }
+    prev = q;
+    max_drift = std::max(max_drift, std::abs(pendulum_energy(*sim) - e0));
+  }
+  ASSERT_GE(crossings, 5);
+  const double period = (last - first) / (crossings - 1);
+  EXPECT_NEAR(period, expected, 0.005 * expected);
+  const double swing_energy = m * kG * d * (1 - std::cos(0.05));
+  RecordProperty("energy_drift_fraction_of_swing_energy", std::to_string(max_drift / swing_energy));
+  EXPECT_LT(max_drift, 0.05 * swing_energy) << "energy drift over 10 s";
+}
+
+struct Slide {
+  double v0 = 0;        // speed along the slope when measuring starts
+  double distance = 0;  // travel down the slope in the following second
+};
+
+Slide slide_on_ramp(double mu) {
+  const std::string xml = R"(<scene><ground enabled="false"/>
+    <ramp name="r" xyz="-1 0 0" length="3" width="1" slope="10deg" friction=")" +
+                          std::to_string(mu) + R"("/>
+    <robot name="b" urdf="block.urdf" xyz="-0.0035 0 0.202" rpy="0 -10deg 0"/></scene>)";
+  auto sim = test::scene_from_text(xml);
+  sim->run_for(0.2);  // settle onto the ramp
+  const auto p0 = sim->robot(0).torso_pose();
+  const dReal* v = dBodyGetLinearVel(sim->robot(0).body().body(0));
+  Slide s;
+  s.v0 = std::hypot(v[0], v[2]);
+  sim->run_for(1.0);
+  const auto p1 = sim->robot(0).torso_pose();
+  s.distance = std::hypot(p1.x - p0.x, p1.z - p0.z) * (p1.z < p0.z ? 1 : -1);
+  return s;
+}
+
+TEST(ClosedFormPhysics, BoxSlidesOnTenDegreeRampWithLowFriction) {
+  const double slope = 10 * std::numbers::pi / 180, mu = 0.1;
+  const double a = kG * (std::sin(slope) - mu * std::cos(slope));  // 0.737 m/s^2
+  const Slide s = slide_on_ramp(mu);
+  const double expected = s.v0 * 1.0 + 0.5 * a * 1.0 * 1.0;
+  EXPECT_NEAR(s.distance, expected, 0.05 * expected);
+}
+
+TEST(ClosedFormPhysics, BoxHoldsOnTenDegreeRampWithHighFriction) {
+  const Slide s = slide_on_ramp(0.3);  // tan(10 deg) = 0.176 < 0.3: static friction holds
+  EXPECT_LT(std::abs(s.distance), 0.002);
+}
+
+}  // namespace
+}  // namespace stride

@@ -1,0 +1,81 @@
+// The simulated NAO: holds its standing pose with stiffness, collapses without, and its force
+// sensors weigh it.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "robot/nao/nao_dimensions.hpp"
+#include "tests/simulator/sim_test_util.hpp"
+
+namespace stride {
+namespace {
+
+std::string stand_scene(double stiffness, bool noise) {
+  return R"(<scene><physics seed="3"/>
+    <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices="../../scenes/robots/nao/nao.devices.xml" stiffness=")" +
+         std::to_string(stiffness) + R"(">
+      <joints LHipPitch="-0.3" RHipPitch="-0.3" LKneePitch="0.6" RKneePitch="0.6"
+              LAnklePitch="-0.3" RAnklePitch="-0.3" LShoulderPitch="1.5" RShoulderPitch="1.5"
+              LShoulderRoll="0.1" RShoulderRoll="-0.1" LElbowRoll="-0.05" RElbowRoll="0.05"/>
+      <sensors noise=")" + (noise ? "on" : "off") + R"("/>
+    </robot></scene>)";
+}
+
+TEST(NaoStanding, StiffRobotStandsTenSecondsWithLittleDrift) {
+  auto sim = test::scene_from_text(stand_scene(1.0, true));
+  sim->run_for(0.5);  // let the contacts settle
+  const auto p0 = sim->robot(0).torso_pose();
+  sim->run_for(10.0);
+  const auto p1 = sim->robot(0).torso_pose();
+  const double drift = std::sqrt(std::pow(p1.x - p0.x, 2) + std::pow(p1.y - p0.y, 2) +
+                                 std::pow(p1.z - p0.z, 2));
+  RecordProperty("torso_drift_m", std::to_string(drift));
+  EXPECT_LT(drift, 0.01);
+  EXPECT_FALSE(sim->robot(0).fallen());
+  EXPECT_GT(p1.z, 0.25);  // standing: hip-to-sole about 0.29 m with bent knees, torso 85 mm above
+}
+
+TEST(NaoStanding, LimpRobotCollapses) {
+  auto sim = test::scene_from_text(stand_scene(0.0, false));
+  const auto p0 = sim->robot(0).torso_pose();
+  sim->run_for(3.0);
+  const auto p1 = sim->robot(0).torso_pose();
+  EXPECT_LT(p1.z, p0.z - 0.1) << "without stiffness the torso must drop";
+}
+
+TEST(NaoStanding, FootSensorsWeighTheRobotAndCopLiesUnderTheFeet) {
+  auto sim = test::scene_from_text(stand_scene(1.0, false));
+  sim->run_for(2.0);
+  const auto& robot = sim->robot(0);
+  const double weight = robot.model().total_mass() * 9.81;
+  double sum = 0, left = 0, right = 0;
+  Eigen::Vector2d moment = Eigen::Vector2d::Zero();
+  // The CoP in the world: every sensor at its world position, weighted by its force.
+  for (int f = 0; f < 2; ++f) {
+    const int foot = robot.model().link_index(f == 0 ? "LFoot" : "RFoot");
+    const Eigen::Isometry3d pose = robot.body().link_pose(foot);
+    for (int k = 0; k < 4; ++k) {
+      const double force = robot.latest_sensors().fsr[f * 4 + k];
+      const Eigen::Vector2d p = nao::kFsrPositions[f * 4 + k];
+      const Eigen::Vector3d w = pose * Eigen::Vector3d(p.x(), p.y(), -nao::kFootHeight);
+      sum += force;
+      (f == 0 ? left : right) += force;
+      moment += force * w.head<2>();
+    }
+  }
+  EXPECT_NEAR(sum, weight, 0.03 * weight);
+  EXPECT_NEAR(left, right, 0.2 * weight);
+  const Eigen::Vector2d cop = moment / sum;
+  // Support polygon of two parallel feet: x within the soles, y between the outer edges.
+  const auto lpose = robot.body().link_pose(robot.model().link_index("LFoot"));
+  const auto rpose = robot.body().link_pose(robot.model().link_index("RFoot"));
+  const double x_min = lpose.translation().x() + nao::kSoleCentreX - nao::kSoleLength / 2;
+  const double x_max = lpose.translation().x() + nao::kSoleCentreX + nao::kSoleLength / 2;
+  EXPECT_GT(cop.x(), x_min);
+  EXPECT_LT(cop.x(), x_max);
+  EXPECT_LT(cop.y(), lpose.translation().y() + nao::kSoleCentreYLeft + nao::kSoleWidth / 2);
+  EXPECT_GT(cop.y(), rpose.translation().y() - nao::kSoleCentreYLeft - nao::kSoleWidth / 2);
+}
+
+}  // namespace
+}  // namespace stride
