@@ -45,6 +45,10 @@ TEST(PatternParameters, ErrorsNameTheParameter) {
             std::string::npos);
   EXPECT_NE(error_of([](auto& p) { p.d_0 = 0.03; }).find("d_0"), std::string::npos);
   EXPECT_NE(error_of([](auto& p) {
+              p.z_min = 0.330, p.z_max = 0.332, p.A_l = 0.025;  // Fig. 3.14 on this model
+            }).find("beyond the leg's reach at mid single support (hip-ankle 0.20335"),
+            std::string::npos);
+  EXPECT_NE(error_of([](auto& p) {
               p.rhythmic = {0, 0};
             }).find("alpha (Eq. 3.15) is 0"),
             std::string::npos);
