@@ -9,7 +9,9 @@
 
 namespace stride::sim {
 
-Simulation::Simulation(SceneDescription scene) : scene_(std::move(scene)) { build(); }
+Simulation::Simulation(SceneDescription scene) : scene_(std::move(scene)) {
+  build();
+}
 
 Simulation::~Simulation() {
   robots_.clear();  // bodies belong to the world; drop robots before it
@@ -52,8 +54,9 @@ void Simulation::build() {
       if (scene_.robots[i].name == p.robot) r = static_cast<int>(i);
     const int link = robots[r]->model().link_index(p.body);
     if (link < 0)
-      throw error_at(p.file, p.line, "<push>: attribute 'body': robot '" + p.robot +
-                                         "' has no link named '" + p.body + "'");
+      throw error_at(
+          p.file, p.line,
+          "<push>: attribute 'body': robot '" + p.robot + "' has no link named '" + p.body + "'");
     pushes.push_back({r, link, p.force, p.at, p.start, p.start + p.duration});
   }
   // Everything built: only now replace the previous state.
@@ -66,7 +69,9 @@ void Simulation::build() {
   steps_ = 0;
 }
 
-void Simulation::reset() { build(); }
+void Simulation::reset() {
+  build();
+}
 
 int Simulation::robot_index(const std::string& name) const {
   for (size_t i = 0; i < robots_.size(); ++i)

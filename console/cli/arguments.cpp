@@ -29,7 +29,9 @@ std::string ArgumentReader::positional(const char* what) {
   throw Error("stride " + command_ + ": missing <" + what + ">");
 }
 
-bool ArgumentReader::has(const std::string& flag) const { return find(flag) >= 0; }
+bool ArgumentReader::has(const std::string& flag) const {
+  return find(flag) >= 0;
+}
 
 bool ArgumentReader::flag(const std::string& flag) {
   const int i = find(flag);

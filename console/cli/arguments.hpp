@@ -14,7 +14,7 @@ class ArgumentReader {
 
   std::string positional(const char* what);  // next non-flag argument, required
   bool has(const std::string& flag) const;
-  bool flag(const std::string& flag);        // a flag without value
+  bool flag(const std::string& flag);  // a flag without value
   std::string text(const std::string& flag);
   std::string text_or(const std::string& flag, const std::string& fallback);
   double number(const std::string& flag);

@@ -14,7 +14,7 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err);
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"balance", "balance classify|ankle-boundaries|closed-loop|hip|combined|lqr [--x0 m --v0 m/s ...] [--json] [--csv f] [--plots dir]: Ch. 7 balance analysis", balance_main},
-      {"run", "run <scene> --seconds S [--seed N] [--report out.json]: headless simulation",
+      {"run", "run <scene> --seconds S [--seed N] [--report out.json] [--log file]: headless simulation",
        run_main},
       {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics", kin_main},
       {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)", dyn_main},

@@ -10,10 +10,28 @@ namespace stride {
 
 class JsonWriter {
  public:
-  JsonWriter& begin_object() { value_prefix(); out_ += '{'; first_.push_back(true); return *this; }
-  JsonWriter& end_object() { out_ += '}'; first_.pop_back(); return *this; }
-  JsonWriter& begin_array() { value_prefix(); out_ += '['; first_.push_back(true); return *this; }
-  JsonWriter& end_array() { out_ += ']'; first_.pop_back(); return *this; }
+  JsonWriter& begin_object() {
+    value_prefix();
+    out_ += '{';
+    first_.push_back(true);
+    return *this;
+  }
+  JsonWriter& end_object() {
+    out_ += '}';
+    first_.pop_back();
+    return *this;
+  }
+  JsonWriter& begin_array() {
+    value_prefix();
+    out_ += '[';
+    first_.push_back(true);
+    return *this;
+  }
+  JsonWriter& end_array() {
+    out_ += ']';
+    first_.pop_back();
+    return *this;
+  }
   JsonWriter& key(std::string_view k) {
     comma();
     string_literal(k);
@@ -32,13 +50,28 @@ class JsonWriter {
     }
     return *this;
   }
-  JsonWriter& value(long long v) { value_prefix(); out_ += std::to_string(v); return *this; }
+  JsonWriter& value(long long v) {
+    value_prefix();
+    out_ += std::to_string(v);
+    return *this;
+  }
   JsonWriter& value(int v) { return value(static_cast<long long>(v)); }
-  JsonWriter& value(bool v) { value_prefix(); out_ += v ? "true" : "false"; return *this; }
-  JsonWriter& value(std::string_view s) { value_prefix(); string_literal(s); return *this; }
+  JsonWriter& value(bool v) {
+    value_prefix();
+    out_ += v ? "true" : "false";
+    return *this;
+  }
+  JsonWriter& value(std::string_view s) {
+    value_prefix();
+    string_literal(s);
+    return *this;
+  }
   JsonWriter& value(const char* s) { return value(std::string_view(s)); }
   template <class T>
-  JsonWriter& field(std::string_view k, const T& v) { key(k); return value(v); }
+  JsonWriter& field(std::string_view k, const T& v) {
+    key(k);
+    return value(v);
+  }
   const std::string& str() const { return out_; }
 
  private:
@@ -49,17 +82,27 @@ class JsonWriter {
     }
   }
   void value_prefix() {
-    if (after_key_) after_key_ = false;
-    else comma();
+    if (after_key_)
+      after_key_ = false;
+    else
+      comma();
   }
   void string_literal(std::string_view s) {
     out_ += '"';
     for (char c : s) {
       switch (c) {
-        case '"': out_ += "\\\""; break;
-        case '\\': out_ += "\\\\"; break;
-        case '\n': out_ += "\\n"; break;
-        case '\t': out_ += "\\t"; break;
+        case '"':
+          out_ += "\\\"";
+          break;
+        case '\\':
+          out_ += "\\\\";
+          break;
+        case '\n':
+          out_ += "\\n";
+          break;
+        case '\t':
+          out_ += "\\t";
+          break;
         default:
           if (static_cast<unsigned char>(c) < 0x20) {
             char buf[8];

@@ -12,11 +12,11 @@ namespace stride::sim {
 // A brushed DC motor with its gear, seen from the joint.
 struct MotorSpec {
   std::string name;
-  double ratio = 1;             // joint value = motor value / ratio
-  double stall_torque = 1;      // N*m at the joint, at stiffness 1 and zero speed
-  double no_load_speed = 5;     // rad/s at the joint
+  double ratio = 1;               // joint value = motor value / ratio
+  double stall_torque = 1;        // N*m at the joint, at stiffness 1 and zero speed
+  double no_load_speed = 5;       // rad/s at the joint
   double torque_constant = 0.01;  // N*m/A at the motor shaft
-  double gain = 100;            // 1/s: target joint speed per radian of position error
+  double gain = 100;              // 1/s: target joint speed per radian of position error
 };
 
 struct ServoSpec {
@@ -28,14 +28,14 @@ struct ImuSpec {
   std::string link = "torso";
   Eigen::Vector3d accelerometer_at = Eigen::Vector3d::Zero();  // link frame
   Eigen::Vector3d gyroscope_at = Eigen::Vector3d::Zero();
-  double accel_noise = 0;  // std dev, m/s^2
-  double gyro_noise = 0;   // std dev, rad/s
-  double angle_noise = 0;  // std dev, rad
+  double accel_noise = 0;                                // std dev, m/s^2
+  double gyro_noise = 0;                                 // std dev, rad/s
+  double angle_noise = 0;                                // std dev, rad
   Eigen::Vector3d gyro_bias = Eigen::Vector3d::Zero();   // rad/s, added always
   Eigen::Vector3d accel_bias = Eigen::Vector3d::Zero();  // m/s^2
-  double accel_range = 2 * 9.81;   // saturation, m/s^2
-  double gyro_range = 8.7266;      // saturation, rad/s (500 deg/s)
-  int delay_frames = 0;            // control frames between sampling and delivery
+  double accel_range = 2 * 9.81;                         // saturation, m/s^2
+  double gyro_range = 8.7266;                            // saturation, rad/s (500 deg/s)
+  int delay_frames = 0;  // control frames between sampling and delivery
 };
 
 struct FsrSpec {
@@ -48,8 +48,8 @@ struct FsrSpec {
 };
 
 struct EncoderSpec {
-  int bits = 12;        // quantisation over one turn
-  double noise = 0;     // std dev, rad
+  int bits = 12;     // quantisation over one turn
+  double noise = 0;  // std dev, rad
 };
 
 struct DeviceDescription {

@@ -11,13 +11,15 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-double non_negative(const XmlElement& e, const char* a, double fallback, Dimension d = Dimension::None) {
+double non_negative(const XmlElement& e, const char* a, double fallback,
+                    Dimension d = Dimension::None) {
   const double v = e.number_or(a, fallback, d);
   if (v < 0) e.fail_attr(a, "expected a value >= 0");
   return v;
 }
 
-double positive(const XmlElement& e, const char* a, double fallback, Dimension d = Dimension::None) {
+double positive(const XmlElement& e, const char* a, double fallback,
+                Dimension d = Dimension::None) {
   const double v = e.number_or(a, fallback, d);
   if (v <= 0) e.fail_attr(a, "expected a value > 0");
   return v;
@@ -67,7 +69,8 @@ FsrSpec fsr(const XmlElement& e) {
     s.allow_only({"name", "x", "y"});
     if (n == 4) s.fail("an <fsr> has exactly four sensors (FL, FR, RL, RR)");
     f.names[n] = s.text("name");
-    f.positions[n] = Eigen::Vector2d(s.number("x", Dimension::Length), s.number("y", Dimension::Length));
+    f.positions[n] =
+        Eigen::Vector2d(s.number("x", Dimension::Length), s.number("y", Dimension::Length));
     ++n;
   }
   if (n != 4) e.fail("an <fsr> has exactly four <sensor> children (FL, FR, RL, RR)");

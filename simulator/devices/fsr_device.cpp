@@ -41,7 +41,8 @@ std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& poin
 
 FsrDevice::FsrDevice(const RobotBody& body, int robot_index, const FsrSpec& spec, NoiseSource noise)
     : spec_(spec), link_(body.model().link_index(spec.link)), robot_(robot_index), noise_(noise) {
-  if (link_ < 0) throw Error("FSR link '" + spec.link + "' is not a link of " + body.model().source);
+  if (link_ < 0)
+    throw Error("FSR link '" + spec.link + "' is not a link of " + body.model().source);
 }
 
 void FsrDevice::accumulate(const RobotBody& body, const PhysicsWorld& world) {

@@ -9,7 +9,8 @@ namespace stride::sim {
 
 ImuDevice::ImuDevice(const RobotBody& body, const ImuSpec& spec, NoiseSource noise)
     : spec_(spec), link_(body.model().link_index(spec.link)), noise_(noise) {
-  if (link_ < 0) throw Error("IMU link '" + spec.link + "' is not a link of " + body.model().source);
+  if (link_ < 0)
+    throw Error("IMU link '" + spec.link + "' is not a link of " + body.model().source);
 }
 
 Eigen::Vector3d ImuDevice::point_velocity(const RobotBody& body, const Eigen::Vector3d& at) const {

@@ -43,11 +43,11 @@ struct UnevenPatch {
   std::string name;
   Eigen::Vector2d centre{0, 0};
   Eigen::Vector2d size{2, 1};
-  double cell = 0.05;        // tile edge, m
-  double max_height = 0.003; // tile tops uniformly in [0, max_height]
-  double max_tilt = 0.02;    // rad, each tile tilted uniformly in [-max_tilt, max_tilt] per axis
+  double cell = 0.05;         // tile edge, m
+  double max_height = 0.003;  // tile tops uniformly in [0, max_height]
+  double max_tilt = 0.02;     // rad, each tile tilted uniformly in [-max_tilt, max_tilt] per axis
   double friction = 0.8;
-  std::uint64_t seed = 0;    // 0: derived from the scene seed
+  std::uint64_t seed = 0;  // 0: derived from the scene seed
 };
 
 struct ControllerConfig {
@@ -71,7 +71,7 @@ struct RobotPlacement {
   std::map<std::string, double> joints;  // initial joint angles by name
   int joints_line = 0;
   bool fixed_base = false;  // weld the root link to the world (test rigs, swing-leg studies)
-  double stiffness = 1.0;  // servo stiffness held until a controller commands otherwise
+  double stiffness = 1.0;   // servo stiffness held until a controller commands otherwise
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;
@@ -84,10 +84,10 @@ struct RobotPlacement {
 struct TimedPush {
   std::string robot;
   std::string body;
-  Eigen::Vector3d force{0, 0, 0};   // N, world frame
-  Eigen::Vector3d at{0, 0, 0};      // application point in the body frame
-  double start = 0, duration = 0;   // s
-  std::string file;                 // where it was written, for errors found at build time
+  Eigen::Vector3d force{0, 0, 0};  // N, world frame
+  Eigen::Vector3d at{0, 0, 0};     // application point in the body frame
+  double start = 0, duration = 0;  // s
+  std::string file;                // where it was written, for errors found at build time
   int line = 0;
 };
 

@@ -42,7 +42,8 @@ class Parser {
     parse_text(ss.str(), path, included_from);
   }
 
-  void parse_text(const std::string& text, const std::string& path, const XmlElement* included_from) {
+  void parse_text(const std::string& text, const std::string& path,
+                  const XmlElement* included_from) {
     const std::string canonical = fs::weakly_canonical(fs::path(path)).string();
     if (open_files_.count(canonical)) included_from->fail("include cycle through '" + path + "'");
     open_files_.insert(canonical);
@@ -73,24 +74,32 @@ class Parser {
 
   void element(const XmlElement& e) {
     const std::string_view n = e.name();
-    if (n == "physics") physics(e);
-    else if (n == "ground") ground(e);
-    else if (n == "box") box(e);
-    else if (n == "ramp") ramp(e);
-    else if (n == "uneven") uneven(e);
-    else if (n == "robot") robot(e);
-    else if (n == "push") push(e);
+    if (n == "physics")
+      physics(e);
+    else if (n == "ground")
+      ground(e);
+    else if (n == "box")
+      box(e);
+    else if (n == "ramp")
+      ramp(e);
+    else if (n == "uneven")
+      uneven(e);
+    else if (n == "robot")
+      robot(e);
+    else if (n == "push")
+      push(e);
     else if (n == "include") {
       e.allow_only({"file"});
       parse_file(resolve(e, e.text("file")), &e);
     } else
-      e.fail("unknown element (expected physics, ground, box, ramp, uneven, robot, push or include)");
+      e.fail(
+          "unknown element (expected physics, ground, box, ramp, uneven, robot, push or include)");
   }
 
   void no_children(const XmlElement& e) {
     if (e.raw()->FirstChildElement())
-      XmlElement(e.raw()->FirstChildElement(), e.file()).fail("unexpected child element of <" +
-                                                              std::string(e.name()) + ">");
+      XmlElement(e.raw()->FirstChildElement(), e.file())
+          .fail("unexpected child element of <" + std::string(e.name()) + ">");
   }
 
   void physics(const XmlElement& e) {
@@ -207,7 +216,8 @@ class Parser {
     r.line = e.line();
     r.name = e.text_or("name", "robot" + std::to_string(out_.robots.size()));
     for (const auto& other : out_.robots)
-      if (other.name == r.name) e.fail_attr("name", "a robot named '" + r.name + "' already exists");
+      if (other.name == r.name)
+        e.fail_attr("name", "a robot named '" + r.name + "' already exists");
     r.urdf = resolve(e, e.text("urdf"));
     r.devices = e.has("devices") ? resolve(e, e.text("devices")) : std::string();
     if (e.has("xyz")) {

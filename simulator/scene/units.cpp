@@ -15,12 +15,17 @@ struct Unit {
 };
 
 constexpr Unit kUnits[] = {
-    {"m", Dimension::Length, 1.0},       {"cm", Dimension::Length, 0.01},
-    {"mm", Dimension::Length, 0.001},    {"rad", Dimension::Angle, 1.0},
+    {"m", Dimension::Length, 1.0},
+    {"cm", Dimension::Length, 0.01},
+    {"mm", Dimension::Length, 0.001},
+    {"rad", Dimension::Angle, 1.0},
     {"deg", Dimension::Angle, std::numbers::pi / 180.0},
-    {"kg", Dimension::Mass, 1.0},        {"g", Dimension::Mass, 0.001},
-    {"s", Dimension::Time, 1.0},         {"ms", Dimension::Time, 0.001},
-    {"N", Dimension::Force, 1.0},        {"Hz", Dimension::Frequency, 1.0},
+    {"kg", Dimension::Mass, 1.0},
+    {"g", Dimension::Mass, 0.001},
+    {"s", Dimension::Time, 1.0},
+    {"ms", Dimension::Time, 0.001},
+    {"N", Dimension::Force, 1.0},
+    {"Hz", Dimension::Frequency, 1.0},
 };
 
 std::string_view trim(std::string_view s) {
@@ -33,13 +38,20 @@ std::string_view trim(std::string_view s) {
 
 std::string_view dimension_name(Dimension d) {
   switch (d) {
-    case Dimension::None: return "a number";
-    case Dimension::Length: return "a length (m, cm, mm)";
-    case Dimension::Angle: return "an angle (rad, deg)";
-    case Dimension::Mass: return "a mass (kg, g)";
-    case Dimension::Time: return "a time (s, ms)";
-    case Dimension::Force: return "a force (N)";
-    case Dimension::Frequency: return "a frequency (Hz)";
+    case Dimension::None:
+      return "a number";
+    case Dimension::Length:
+      return "a length (m, cm, mm)";
+    case Dimension::Angle:
+      return "an angle (rad, deg)";
+    case Dimension::Mass:
+      return "a mass (kg, g)";
+    case Dimension::Time:
+      return "a time (s, ms)";
+    case Dimension::Force:
+      return "a force (N)";
+    case Dimension::Frequency:
+      return "a frequency (Hz)";
   }
   return "a number";
 }
@@ -63,9 +75,8 @@ double parse_quantity(std::string_view text, Dimension d) {
                                     "' (expected " + std::string(dimension_name(d)) + ")");
       return value * u.factor;
     }
-  throw std::invalid_argument("unknown unit '" + std::string(unit) + "' in '" +
-                              std::string(text) + "' (expected " +
-                              std::string(dimension_name(d)) + ")");
+  throw std::invalid_argument("unknown unit '" + std::string(unit) + "' in '" + std::string(text) +
+                              "' (expected " + std::string(dimension_name(d)) + ")");
 }
 
 }  // namespace stride::sim

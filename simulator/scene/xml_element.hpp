@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include <Eigen/Core>
 #include <tinyxml2.h>
+#include <Eigen/Core>
 
 #include "simulator/scene/units.hpp"
 
@@ -39,7 +39,8 @@ class XmlElement {
   Eigen::Vector2d vector2_or(const char* attr, const Eigen::Vector2d& fallback,
                              Dimension d = Dimension::None) const;
   // One of `choices`, returned as its index.
-  int choice_or(const char* attr, std::initializer_list<std::string_view> choices, int fallback) const;
+  int choice_or(const char* attr, std::initializer_list<std::string_view> choices,
+                int fallback) const;
 
   [[noreturn]] void fail(const std::string& message) const;
   [[noreturn]] void fail_attr(const char* attr, const std::string& message) const;

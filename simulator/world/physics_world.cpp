@@ -127,7 +127,8 @@ void PhysicsWorld::step() {
   dSpaceCollide(robot_space_, this, &near_callback);
   dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), reinterpret_cast<dGeomID>(static_space_),
                  this, &near_callback);
-  // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each other.
+  // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each
+  // other.
   dRandSetSeed(rand_state_);
   if (physics_.solver == PhysicsSettings::Solver::Exact)
     dWorldStep(world_, physics_.step);

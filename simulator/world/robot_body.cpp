@@ -22,9 +22,12 @@ void to_ode_rotation(const Eigen::Matrix3d& m, dMatrix3 r) {
 dGeomID make_geom(dSpaceID space, const model::CollisionShape& s) {
   using Kind = model::CollisionShape::Kind;
   switch (s.kind) {
-    case Kind::Box: return dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
-    case Kind::Sphere: return dCreateSphere(space, s.radius);
-    case Kind::Cylinder: return dCreateCylinder(space, s.radius, s.length);
+    case Kind::Box:
+      return dCreateBox(space, s.box_size.x(), s.box_size.y(), s.box_size.z());
+    case Kind::Sphere:
+      return dCreateSphere(space, s.radius);
+    case Kind::Cylinder:
+      return dCreateCylinder(space, s.radius, s.length);
   }
   return nullptr;
 }
@@ -62,7 +65,8 @@ RobotBody::RobotBody(PhysicsWorld& world, const model::RobotModel& model, int ro
     const double mass = l.inertial.mass > 1e-6 ? l.inertial.mass : 1e-6;
     Eigen::Matrix3d in = l.inertial.inertia;
     if (in.diagonal().minCoeff() <= 0) in = Eigen::Matrix3d::Identity() * 1e-9;
-    dMassSetParameters(&m, mass, 0, 0, 0, in(0, 0), in(1, 1), in(2, 2), in(0, 1), in(0, 2), in(1, 2));
+    dMassSetParameters(&m, mass, 0, 0, 0, in(0, 0), in(1, 1), in(2, 2), in(0, 1), in(0, 2),
+                       in(1, 2));
     dBodySetMass(b, &m);
     Eigen::Isometry3d body_pose = root_pose * zero_poses[i];
     body_pose.translate(l.inertial.com);
@@ -126,7 +130,8 @@ RobotBody::RobotBody(PhysicsWorld& world, const model::RobotModel& model, int ro
 }
 
 Eigen::Isometry3d RobotBody::link_pose(int link) const {
-  Eigen::Isometry3d t = to_isometry(dBodyGetPosition(bodies_[link]), dBodyGetRotation(bodies_[link]));
+  Eigen::Isometry3d t =
+      to_isometry(dBodyGetPosition(bodies_[link]), dBodyGetRotation(bodies_[link]));
   t.translate(-model_.links[link].inertial.com);
   return t;
 }
@@ -139,18 +144,24 @@ Eigen::Vector3d RobotBody::link_com(int link) const {
 double RobotBody::joint_position(int j) const {
   dJointID id = joints_[j];
   switch (dJointGetType(id)) {
-    case dJointTypeHinge: return dJointGetHingeAngle(id);
-    case dJointTypeSlider: return dJointGetSliderPosition(id);
-    default: return 0;
+    case dJointTypeHinge:
+      return dJointGetHingeAngle(id);
+    case dJointTypeSlider:
+      return dJointGetSliderPosition(id);
+    default:
+      return 0;
   }
 }
 
 double RobotBody::joint_velocity(int j) const {
   dJointID id = joints_[j];
   switch (dJointGetType(id)) {
-    case dJointTypeHinge: return dJointGetHingeAngleRate(id);
-    case dJointTypeSlider: return dJointGetSliderPositionRate(id);
-    default: return 0;
+    case dJointTypeHinge:
+      return dJointGetHingeAngleRate(id);
+    case dJointTypeSlider:
+      return dJointGetSliderPositionRate(id);
+    default:
+      return 0;
   }
 }
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <ode/ode.h>
+#include <Eigen/Geometry>
 
 #include "robot/model/link_poses.hpp"
 #include "robot/model/robot_model.hpp"
@@ -26,8 +26,8 @@ class RobotBody {
   dBodyID body(int link) const { return bodies_[link]; }
   dJointID joint(int j) const { return joints_[j]; }  // nullptr for fixed joints
 
-  Eigen::Isometry3d link_pose(int link) const;        // world frame
-  Eigen::Vector3d link_com(int link) const;           // world frame
+  Eigen::Isometry3d link_pose(int link) const;  // world frame
+  Eigen::Vector3d link_com(int link) const;     // world frame
   double joint_position(int j) const;
   double joint_velocity(int j) const;
   // Torque the joint's motor and limits applied during the last step, about the joint axis.

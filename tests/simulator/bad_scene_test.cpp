@@ -31,7 +31,8 @@ void expect_error(const std::string& xml, const std::string& file_line, const st
 const std::string kNao = R"(urdf="../../scenes/robots/nao/nao.urdf")";
 
 TEST(BadScene, MalformedXml) {
-  expect_error("<scene>\n<ground friction=\"0.8\">\n</scene>", "bad.xml:2", "malformed XML (mismatched element)");
+  expect_error("<scene>\n<ground friction=\"0.8\">\n</scene>", "bad.xml:2",
+               "malformed XML (mismatched element)");
 }
 
 TEST(BadScene, UnknownElement) {

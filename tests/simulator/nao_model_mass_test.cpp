@@ -16,13 +16,20 @@ struct Row {
   double m, x, y, z;
 };
 constexpr Row kFacts[] = {
-    {"torso", 1.04956, -0.00413, 0, 0.04342},     {"Neck", 0.07842, -1e-5, 0, -0.02742},
-    {"Head", 0.60533, -0.00112, 0, 0.05258},      {"LShoulder", 0.09304, -0.00165, -0.02663, 0.00014},
-    {"LBicep", 0.15777, 0.02455, 0.00563, 0.0033}, {"LElbow", 0.06483, -0.02744, 0, -0.00014},
-    {"LForeArm", 0.07761, 0.02556, 0.00281, 0.00076}, {"LHand", 0.18533, 0.03434, -0.00088, 0.00308},
-    {"LPelvis", 0.06981, -0.00781, -0.01114, 0.02661}, {"LHip", 0.14053, -0.01549, 0.00029, -0.00515},
-    {"LThigh", 0.38968, 0.00138, 0.00221, -0.05373}, {"LTibia", 0.30142, 0.00453, 0.00225, -0.04936},
-    {"LAnkle", 0.13416, 0.00045, 0.00029, 0.00685}, {"LFoot", 0.17184, 0.02542, 0.0033, -0.03239},
+    {"torso", 1.04956, -0.00413, 0, 0.04342},
+    {"Neck", 0.07842, -1e-5, 0, -0.02742},
+    {"Head", 0.60533, -0.00112, 0, 0.05258},
+    {"LShoulder", 0.09304, -0.00165, -0.02663, 0.00014},
+    {"LBicep", 0.15777, 0.02455, 0.00563, 0.0033},
+    {"LElbow", 0.06483, -0.02744, 0, -0.00014},
+    {"LForeArm", 0.07761, 0.02556, 0.00281, 0.00076},
+    {"LHand", 0.18533, 0.03434, -0.00088, 0.00308},
+    {"LPelvis", 0.06981, -0.00781, -0.01114, 0.02661},
+    {"LHip", 0.14053, -0.01549, 0.00029, -0.00515},
+    {"LThigh", 0.38968, 0.00138, 0.00221, -0.05373},
+    {"LTibia", 0.30142, 0.00453, 0.00225, -0.04936},
+    {"LAnkle", 0.13416, 0.00045, 0.00029, 0.00685},
+    {"LFoot", 0.17184, 0.02542, 0.0033, -0.03239},
 };
 
 // Link origins at the zero pose in the torso frame, from the link lengths (thesis Appendix A).
@@ -45,7 +52,8 @@ TEST(NaoModel, TotalMassAndCentreOfMassMatchPublishedNumbers) {
   for (const Row& r : kFacts) {
     const std::string name = r.link;
     const bool sided = name[0] == 'L';  // left links; the right mirrors them
-    for (double s : sided ? std::initializer_list<double>{1, -1} : std::initializer_list<double>{1}) {
+    for (double s :
+         sided ? std::initializer_list<double>{1, -1} : std::initializer_list<double>{1}) {
       const std::string base = sided ? name.substr(1) : name;
       mass += r.m;
       moment += r.m * (origin_of(base, s) + Eigen::Vector3d(r.x, s * r.y, r.z));

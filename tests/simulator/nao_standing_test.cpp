@@ -17,7 +17,8 @@ std::string stand_scene(double stiffness, bool noise) {
       <joints LHipPitch="-0.3" RHipPitch="-0.3" LKneePitch="0.6" RKneePitch="0.6"
               LAnklePitch="-0.3" RAnklePitch="-0.3" LShoulderPitch="1.5" RShoulderPitch="1.5"
               LShoulderRoll="0.1" RShoulderRoll="-0.1" LElbowRoll="-0.05" RElbowRoll="0.05"/>
-      <sensors noise=")" + (noise ? "on" : "off") + R"("/>
+      <sensors noise=")" +
+         (noise ? "on" : "off") + R"("/>
     </robot></scene>)";
 }
 
@@ -27,8 +28,8 @@ TEST(NaoStanding, StiffRobotStandsTenSecondsWithLittleDrift) {
   const auto p0 = sim->robot(0).torso_pose();
   sim->run_for(10.0);
   const auto p1 = sim->robot(0).torso_pose();
-  const double drift = std::sqrt(std::pow(p1.x - p0.x, 2) + std::pow(p1.y - p0.y, 2) +
-                                 std::pow(p1.z - p0.z, 2));
+  const double drift =
+      std::sqrt(std::pow(p1.x - p0.x, 2) + std::pow(p1.y - p0.y, 2) + std::pow(p1.z - p0.z, 2));
   RecordProperty("torso_drift_m", std::to_string(drift));
   EXPECT_LT(drift, 0.01);
   EXPECT_FALSE(sim->robot(0).fallen());

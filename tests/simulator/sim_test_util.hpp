@@ -8,7 +8,9 @@
 
 namespace stride::test {
 
-inline std::string source_path(const std::string& rel) { return std::string(STRIDE_SOURCE_DIR) + "/" + rel; }
+inline std::string source_path(const std::string& rel) {
+  return std::string(STRIDE_SOURCE_DIR) + "/" + rel;
+}
 
 // A scene given as text, resolved as if it were the file tests/data/<name>.
 inline std::unique_ptr<sim::Simulation> scene_from_text(const std::string& xml,

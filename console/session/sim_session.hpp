@@ -1,0 +1,42 @@
+#pragma once
+// A loaded scene with its controllers: the Simulation plus one Runtime per robot that has a
+// <controller>, stepped together. Console commands and `stride run` act on this.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "robot/framework/module_registry.hpp"
+#include "robot/runtime/runtime.hpp"
+#include "simulator/simulation.hpp"
+
+namespace stride::console {
+
+class SimSession {
+ public:
+  // Loads the scene and builds its controllers; throws stride::Error and builds nothing on error.
+  explicit SimSession(const std::string& scene_path,
+                      std::optional<std::uint64_t> seed = std::nullopt);
+  explicit SimSession(sim::SceneDescription scene);
+  ~SimSession();
+
+  sim::Simulation& simulation() { return *sim_; }
+  const sim::Simulation& simulation() const { return *sim_; }
+  // The controller of robot `i`, or nullptr if the scene gives it none.
+  Runtime* runtime(int robot) { return runtimes_[robot].get(); }
+  const ModuleRegistry& registry() const { return registry_; }
+  RuntimeConfig runtime_config(int robot) const;
+
+  // Rebuilds world and controllers from the same description.
+  void reset();
+
+ private:
+  void attach_controllers();
+
+  ModuleRegistry registry_;
+  std::unique_ptr<sim::Simulation> sim_;
+  std::vector<std::unique_ptr<Runtime>> runtimes_;
+};
+
+}  // namespace stride::console
