@@ -8,9 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "behaviours/walking/pattern/pattern_joints.hpp"
 #include "behaviours/walking/pattern/support_polygon.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 #include "console/cli/subcommand.hpp"
+#include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -82,6 +84,120 @@ PatternOptions parse_options(Args args) {
   return o;
 }
 
+// One sampled instant with its leg joints.
+struct Frame {
+  PatternSample s;
+  walking::LegJoints q;
+};
+
+plot::Table walk_table(const std::vector<Frame>& walk) {
+  plot::Table t{{"time", "waist_x", "waist_y", "waist_z", "left_x", "left_y", "left_z", "right_x",
+                 "right_y", "right_z", "zmp_x", "zmp_y"}};
+  for (std::string_view n : walking::kLegJointNames) t.columns.emplace_back(n);
+  t.columns.insert(t.columns.end(), {"support", "waist_vx", "waist_vy", "waist_vz"});
+  for (const Frame& f : walk) {
+    const PatternSample& s = f.s;
+    std::vector<double> row = {s.t,
+                               s.waist.x(),
+                               s.waist.y(),
+                               s.waist.z(),
+                               s.left_foot.x(),
+                               s.left_foot.y(),
+                               s.left_foot.z(),
+                               s.right_foot.x(),
+                               s.right_foot.y(),
+                               s.right_foot.z(),
+                               s.zmp.x(),
+                               s.zmp.y()};
+    row.insert(row.end(), f.q.left.begin(), f.q.left.end());
+    row.insert(row.end(), f.q.right.begin(), f.q.right.end());
+    row.insert(row.end(), {static_cast<double>(s.support), s.waist_velocity.x(),
+                           s.waist_velocity.y(), s.waist_velocity.z()});
+    t.add_row(std::move(row));
+  }
+  return t;
+}
+
+// Figures gnuplot_plot.hpp's 2-D line plots cannot draw (3-D curve, stick diagram).
+void run_gnuplot_script(const std::string& gp_path, const std::string& script) {
+  {
+    std::ofstream f(gp_path);
+    if (!f) throw Error("cannot write " + gp_path);
+    f << script;
+  }
+  if (std::system(("gnuplot '" + gp_path + "' 2>/dev/null").c_str()) != 0)
+    throw Error("gnuplot failed on " + gp_path);
+}
+
+std::string terminal_line(const std::string& png) {
+  const std::string term = plot::png_terminal();
+  if (term.empty()) throw Error("gnuplot with a png terminal not found (install gnuplot-nox)");
+  return "set terminal " + term + " size 900,600\nset output '" + png + "'\nset grid\n";
+}
+
+// Fig. 3.18: hip-knee-ankle sticks of one leg every `every` frames, in the sagittal plane.
+void stick_diagram(const std::vector<Frame>& walk, model::Side side, const std::string& dir,
+                   const std::string& stem, int every) {
+  const std::string dat = dir + "/" + stem + ".dat";
+  {
+    std::ofstream f(dat);
+    for (std::size_t i = 0; i < walk.size(); i += every) {
+      const auto& q = side == model::Side::Left ? walk[i].q.left : walk[i].q.right;
+      const walking::LegPoints l = walking::leg_points(side, q, walk[i].s.waist);
+      for (const Eigen::Vector3d& p : {l.hip, l.knee, l.ankle}) f << p.x() << ' ' << p.z() << '\n';
+      f << '\n';  // a blank line ends one stick
+    }
+  }
+  run_gnuplot_script(dir + "/" + stem + ".gp",
+                     terminal_line(dir + "/" + stem + ".png") + "set title '" + stem +
+                         ": hip, knee, ankle (Fig. 3.18)' noenhanced\nset xlabel 'x [m]'\n"
+                         "set ylabel 'z [m]'\nset size ratio -1\nplot '" +
+                         dat + "' with linespoints lw 1 pt 7 ps 0.3 notitle\n");
+}
+
+void write_plots(const std::vector<Frame>& walk, const walking::PatternParameters& p,
+                 const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const std::string csv = dir + "/pattern.csv";
+  plot::write_csv(csv, walk_table(walk));
+  auto line_plot = [&](const std::string& stem, const std::string& x,
+                       std::vector<plot::Series> series, const std::string& title,
+                       const std::string& x_label, const std::string& y_label,
+                       const std::string& x_range = "") {
+    plot::render_png({.csv_path = csv,
+                      .x_column = x,
+                      .series = std::move(series),
+                      .title = title,
+                      .x_label = x_label,
+                      .y_label = y_label,
+                      .png_path = dir + "/" + stem + ".png",
+                      .x_range = x_range});
+  };
+  line_plot("fig3_8_waist_velocity", "time", {{"waist_vx", "waist forward velocity"}},
+            "Fig. 3.8: forward waist velocity", "t [s]", "[m/s]");
+  line_plot("fig3_10_lateral_first_step", "time", {{"waist_y", "waist y"}},
+            "Fig. 3.10: lateral waist trajectory, first step (Eqs. 3.7-3.8)", "t [s]", "[m]",
+            "[0:" + std::to_string(p.T_step()) + "]");
+  line_plot("fig3_15_forward", "time",
+            {{"waist_x", "waist"}, {"left_x", "left foot"}, {"right_x", "right foot"}},
+            "Fig. 3.15: waist and feet, forward direction", "t [s]", "x [m]");
+  line_plot("fig3_16_transverse", "waist_x", {{"waist_y", "waist"}, {"zmp_y", "ZMP", "zmp_x"}},
+            "Fig. 3.16: waist and ZMP, transverse plane", "x [m]", "y [m]");
+  line_plot("fig3_16_sagittal", "time", {{"waist_z", "waist height"}},
+            "Fig. 3.16: waist, sagittal plane", "t [s]", "z [m]");
+  line_plot("fig3_17_knees", "time", {{"LKneePitch", "left knee"}, {"RKneePitch", "right knee"}},
+            "Fig. 3.17: knee pitch", "t [s]", "[rad]");
+  run_gnuplot_script(dir + "/fig3_14_waist_3d.gp",
+                     terminal_line(dir + "/fig3_14_waist_3d.png") +
+                         "set datafile separator ','\nset title 'Fig. 3.14: waist trajectory'\n"
+                         "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel 'z [m]'\n"
+                         "set ticslevel 0\nsplot '" +
+                         csv + "' skip 1 using 2:3:4 with lines lw 2 title 'waist'\n");
+  const int every = std::max(1, static_cast<int>(walk.size() / 150));
+  stick_diagram(walk, model::Side::Left, dir, "fig3_18_stick_left", every);
+  stick_diagram(walk, model::Side::Right, dir, "fig3_18_stick_right", every);
+}
+
 }  // namespace
 
 int pattern_main(Args args, std::ostream& out, std::ostream& err) {
@@ -90,40 +206,46 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
     return 2;
   }
   PatternOptions o;
-  std::vector<PatternSample> walk;
+  std::vector<Frame> walk;
   try {
     o = parse_options(args);
-    walk = o.conventional ? walking::sample_walk(walking::ConventionalPattern(o.params), o.dt)
-                          : walking::sample_walk(walking::StretchedKneePattern(o.params), o.dt);
+    const std::vector<PatternSample> samples =
+        o.conventional ? walking::sample_walk(walking::ConventionalPattern(o.params), o.dt)
+                       : walking::sample_walk(walking::StretchedKneePattern(o.params), o.dt);
+    walk.reserve(samples.size());
+    for (const PatternSample& s : samples) walk.push_back({s, walking::leg_joints(s)});
   } catch (const Error& e) {
     err << "stride pattern: " << e.what() << "\n";
     return 2;
   }
-  if (!o.csv.empty()) {
-    std::ofstream f(o.csv);
-    if (!f) {
-      err << "stride pattern: cannot write " << o.csv << "\n";
-      return 1;
+  try {
+    if (!o.csv.empty()) {
+      plot::Table t = walk_table(walk);
+      t.columns.resize(12 + 12);  // the documented columns; pattern.csv under --plots has more
+      for (auto& row : t.rows) row.resize(24);
+      plot::write_csv(o.csv, t);
     }
-    f << "time,waist_x,waist_y,waist_z,left_x,left_y,left_z,right_x,right_y,right_z,zmp_x,zmp_y,"
-         "support\n";
-    f.precision(9);
-    for (const PatternSample& s : walk) {
-      f << s.t << ',' << s.waist.x() << ',' << s.waist.y() << ',' << s.waist.z() << ','
-        << s.left_foot.x() << ',' << s.left_foot.y() << ',' << s.left_foot.z() << ','
-        << s.right_foot.x() << ',' << s.right_foot.y() << ',' << s.right_foot.z() << ','
-        << s.zmp.x() << ',' << s.zmp.y() << ',' << static_cast<int>(s.support) << '\n';
-    }
+    if (!o.plots.empty()) write_plots(walk, o.params, o.plots);
+  } catch (const Error& e) {
+    err << "stride pattern: " << e.what() << "\n";
+    return 1;
   }
-  double worst = std::numeric_limits<double>::infinity();
-  for (const PatternSample& s : walk)
-    worst = std::min(worst, walking::inside_margin(walking::support_polygon(s), s.zmp));
-  const double duration = walk.back().t, distance = walk.back().waist.x();
+  double worst = std::numeric_limits<double>::infinity(), min_knee = worst;
+  int unreachable = 0;
+  for (const Frame& f : walk) {
+    worst = std::min(worst, walking::inside_margin(walking::support_polygon(f.s), f.s.zmp));
+    unreachable += f.q.reachable ? 0 : 1;
+    if (f.s.support == walking::SupportPhase::kLeft) min_knee = std::min(min_knee, f.q.left[3]);
+    if (f.s.support == walking::SupportPhase::kRight) min_knee = std::min(min_knee, f.q.right[3]);
+  }
+  const double duration = walk.back().s.t, distance = walk.back().s.waist.x();
   out << (o.conventional ? "conventional" : "stretched-knee") << " pattern: " << o.params.steps + 1
       << " foot steps in " << duration << " s, " << distance << " m, " << distance / duration
-      << " m/s mean, step length " << distance / (o.params.steps + 1)
-      << " m (distance / steps), worst ZMP margin to the support polygon " << worst << " m\n";
-  return 0;
+      << " m/s mean, " << distance / (o.params.steps + 1)
+      << " m per step; worst ZMP margin to the support polygon " << worst
+      << " m; smallest support knee " << min_knee << " rad; " << unreachable
+      << " samples out of the legs' reach\n";
+  return unreachable == 0 ? 0 : 1;
 }
 
 }  // namespace stride::cli

@@ -9,6 +9,7 @@
 
 #include "behaviours/walking/pattern/pattern_parameters.hpp"
 #include "console/cli/subcommand.hpp"
+#include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -121,7 +122,29 @@ TEST(PatternCommand, WritesTheWholeWalkAtTheControlPeriod) {
   while (std::getline(f, line)) ++rows, last = line;
   EXPECT_EQ(rows, 501);  // 20 steps of 0.25 s at 10 ms, both ends included
   EXPECT_EQ(last.rfind("5,", 0), 0u);
+  EXPECT_NE(header.find(",LKneePitch,"), std::string::npos);
+  EXPECT_NE(out.find("21 foot steps in 5 s"), std::string::npos) << out;
   std::filesystem::remove(csv);
+}
+
+TEST(PatternCommand, PlotsTheChapter3Figures) {
+  if (plot::png_terminal().empty()) GTEST_SKIP() << "gnuplot not installed";
+  const auto dir = std::filesystem::temp_directory_path() / "stride_pattern_plots";
+  std::string out, err;
+  ASSERT_EQ(
+      run({"--preset", "medium", "--set", "steps=8", "--conventional", "--plots", dir.string()},
+          out, err),
+      0)
+      << err;
+  for (const char* png : {"fig3_8_waist_velocity", "fig3_10_lateral_first_step", "fig3_14_waist_3d",
+                          "fig3_15_forward", "fig3_16_transverse", "fig3_16_sagittal",
+                          "fig3_17_knees", "fig3_18_stick_left", "fig3_18_stick_right"}) {
+    const auto path = dir / (std::string(png) + ".png");
+    EXPECT_TRUE(std::filesystem::exists(path)) << path;
+    if (std::filesystem::exists(path)) EXPECT_GT(std::filesystem::file_size(path), 1000u);
+  }
+  EXPECT_NE(out.find("conventional pattern"), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

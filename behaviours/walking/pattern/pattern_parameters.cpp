@@ -165,7 +165,7 @@ PatternParameters preset(const std::string& name) {
       p.development = {{0.01, 0.02}, {0.03, 0.04}};
       p.decay = {{0.03, 0.04}, {0.01, 0.02}};
     } else {
-      p.z_min = 0.315, p.z_max = 0.320, p.rhythmic = {0.23, 0.24};
+      p.z_min = 0.300, p.z_max = 0.305, p.rhythmic = {0.23, 0.24};  // reachable 0.136 m steps
       p.development = linear_levels(p.rhythmic, 3);
       p.decay = linear_levels(p.rhythmic, 3);
     }
