@@ -44,6 +44,7 @@ void describe_into(const TypeDesc& d, int indent, std::ostringstream& out) {
 }
 
 constexpr int kMaxDepth = 32;  // a hostile description must not exhaust the stack
+constexpr std::uint64_t kMaxArrayLength = 1 << 20;  // nor the memory
 
 TypeDescPtr read_desc(ByteReader& r, int depth) {
   if (depth > kMaxDepth) throw Error("type description nested deeper than 32 levels");
@@ -62,6 +63,8 @@ TypeDescPtr read_desc(ByteReader& r, int depth) {
     }
     case Kind::Array:
       d->length = r.get<std::uint64_t>();
+      if (d->length > kMaxArrayLength)
+        throw Error("type description: array length " + std::to_string(d->length) + " too large");
       d->vector_components = r.get<std::uint8_t>() != 0;
       d->element = read_desc(r, depth + 1);
       break;

@@ -131,7 +131,7 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
       if (t.desc->kind != Kind::Array && t.desc->kind != Kind::List)
         throw fail("is a " + type_label(*t.desc) + ", not an array");
       auto& items = std::get<Value::List>(t.value->data);
-      where += "[" + std::string(digits) + "]";
+      where.append("[").append(digits).append("]");
       if (index >= items.size())
         throw fail("index out of range [0, " + std::to_string(items.size()) + ")");
       t = {t.desc->element.get(), &items[index], t.range};
@@ -150,7 +150,7 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
         std::string_view("xyzw").find(name[0]) != std::string_view::npos) {
       const auto index = std::string_view("xyzw").find(name[0]);
       auto& items = std::get<Value::List>(t.value->data);
-      where += "." + std::string(name);
+      where.append(".").append(name);
       if (index >= items.size())
         throw fail("vector has only " + std::to_string(items.size()) + " components");
       t = {t.desc->element.get(), &items[index], t.range};
@@ -159,7 +159,7 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
       while (k < t.desc->fields.size() && t.desc->fields[k].name != name) ++k;
       if (k == t.desc->fields.size())
         throw fail("no field '" + std::string(name) + "' (fields: " + field_list(*t.desc) + ")");
-      where += "." + std::string(name);
+      where.append(".").append(name);
       const auto& f = t.desc->fields[k];
       t = {f.type.get(), &std::get<Value::List>(t.value->data)[k], f.range};
     } else {
@@ -383,8 +383,9 @@ Value read_value(const TypeDesc& d, ByteReader& r) {
     case Kind::Array:
     case Kind::List: {
       const std::size_t n = d.kind == Kind::Array ? d.length : r.get<std::uint32_t>();
-      if (n > r.remaining() && n > 0 && d.kind == Kind::List)
-        throw Error("binary data: list length " + std::to_string(n) + " too large");
+      if (n > r.remaining())  // every element takes at least one byte
+        throw Error("binary data: " + std::to_string(n) + " elements but only " +
+                    std::to_string(r.remaining()) + " bytes left");
       Value::List items;
       items.reserve(n);
       for (std::size_t i = 0; i < n; ++i) items.push_back(read_value(*d.element, r));

@@ -259,5 +259,18 @@ TEST(Binary, TruncatedDataIsAnErrorAndLeavesTheValue) {
   EXPECT_EQ(other.position[0], 0.0);
 }
 
+TEST(Binary, HostileInputIsAnErrorNotACrash) {
+  auto bytes = to_binary(ModuleTimes{{"a"}, {1}});
+  bytes[3] = '\x7f';  // the first list now claims about two billion entries
+  ModuleTimes m;
+  EXPECT_EQ(error_of([&] { from_binary(m, bytes); }),
+            "binary data: list length 2130706433 too large");
+  ByteReader data(bytes);
+  EXPECT_THROW(read_value(*describe<ModuleTimes>(), data), Error);
+  const std::string bad_kind(1, static_cast<char>(99));
+  ByteReader desc(bad_kind);
+  EXPECT_EQ(error_of([&] { read_type_desc(desc); }), "type description: unknown kind 99");
+}
+
 }  // namespace
 }  // namespace stride
