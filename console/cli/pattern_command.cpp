@@ -233,7 +233,7 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
   double worst = std::numeric_limits<double>::infinity(), min_knee = worst;
   int unreachable = 0;
   for (const Frame& f : walk) {
-    worst = std::min(worst, walking::inside_margin(walking::support_polygon(f.s), f.s.zmp));
+    worst = std::min(worst, walking::zmp_margin(f.s));
     unreachable += f.q.reachable ? 0 : 1;
     if (f.s.support == walking::SupportPhase::kLeft) min_knee = std::min(min_knee, f.q.left[3]);
     if (f.s.support == walking::SupportPhase::kRight) min_knee = std::min(min_knee, f.q.right[3]);

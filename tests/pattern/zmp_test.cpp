@@ -40,19 +40,19 @@ TEST(PointMassZmp, MatchesTheClosedFormAtRhythmicBoundaries) {
   }
 }
 
-TEST(SupportPolygon, SoleRectangleAndHullOfBothSoles) {
-  const Polygon left = sole_corners(Foot::kLeft, {0, 0.05, 0});
-  EXPECT_NEAR(inside_margin(left, {0.02, 0.0556}), 0.0455, 1e-12);  // centre: half the width
-  EXPECT_NEAR(inside_margin(left, {0.02, 0.0}), -0.0101, 1e-12);    // inner edge at y = 0.0101
+TEST(SupportPolygon, SupportSoleInSingleSupportHullOfBothInDoubleSupport) {
   PatternSample s;
   s.left_foot = {0, 0.05, 0};
   s.right_foot = {0.05, -0.05, 0};
-  const Polygon hull = support_polygon(s);
-  EXPECT_EQ(hull.size(), 6u);  // two corners of each sole are hidden inside the hull
-  EXPECT_GT(inside_margin(hull, {0.03, 0.0}), 0.0);
-  EXPECT_LT(inside_margin(hull, {0.14, 0.06}), 0.0);  // ahead of the rear-left sole
+  s.zmp = {0.02, 0.0556};  // left sole centre: half the sole width from its long edges
+  EXPECT_NEAR(zmp_margin(s), 0.0455, 1e-12);
+  EXPECT_EQ(both_soles_polygon(s).size, 6);  // two corners of each sole hidden in the hull
+  s.zmp = {0.03, 0.0};                       // between the feet
+  EXPECT_GT(zmp_margin(s), 0.0);
+  s.support = SupportPhase::kLeft;
+  EXPECT_NEAR(zmp_margin(s), -0.0101, 1e-12);  // the left sole's inner edge is at y = 0.0101
   s.support = SupportPhase::kRight;
-  EXPECT_LT(inside_margin(support_polygon(s), {0.03, 0.0}), 0.0);
+  EXPECT_LT(zmp_margin(s), 0.0);
 }
 
 // Fig. 3.16's sway (A_l = 0.025 m, T_stride = 1.16 s) carries the ZMP onto the support sole.
@@ -61,17 +61,11 @@ TEST(ZmpInSupportPolygon, Fig3_16PatternKeepsTheZmpOnTheSoles) {
   const PatternParameters& p = w.parameters();
   EXPECT_NEAR(mid_support_zmp_y(p), p.d_0, 0.002);  // ZMP peaks under the ankle
   for (const PatternSample& s : sample_walk(w, 0.005)) {
-    const Polygon both = convex_hull([&] {
-      Polygon v = sole_corners(Foot::kLeft, s.left_foot);
-      const Polygon r = sole_corners(Foot::kRight, s.right_foot);
-      v.insert(v.end(), r.begin(), r.end());
-      return v;
-    }());
-    EXPECT_GE(inside_margin(both, s.zmp), 0.0) << "t = " << s.t;
+    EXPECT_GE(model::stability_margin(s.zmp, both_soles_polygon(s)), 0.0) << "t = " << s.t;
     // The half-length first and last swings are excepted: there the cubic of Eq. 3.7 crosses
     // the walking line before the swing foot lands.
     if (s.t > p.T_s() && s.t < w.duration() - p.T_s())
-      EXPECT_GE(inside_margin(support_polygon(s), s.zmp), 0.0) << "t = " << s.t;
+      EXPECT_GE(zmp_margin(s), 0.0) << "t = " << s.t;
   }
 }
 
@@ -84,9 +78,8 @@ TEST(ZmpInSupportPolygon, Table4_3PatternsKeepTheZmpBetweenTheSoles) {
     const double inner_edge = p.d_0 - (0.5 * nao::kSoleWidth - nao::kSoleCentreYLeft);
     EXPECT_LT(mid_support_zmp_y(p), inner_edge) << name;
     for (const PatternSample& s : sample_walk(w, 0.005)) {
-      PatternSample both = s;
-      both.support = SupportPhase::kDouble;
-      EXPECT_GE(inside_margin(support_polygon(both), s.zmp), 0.0) << name << " t = " << s.t;
+      EXPECT_GE(model::stability_margin(s.zmp, both_soles_polygon(s)), 0.0)
+          << name << " t = " << s.t;
       EXPECT_LT(std::abs(s.zmp.y()), inner_edge) << name << " t = " << s.t;
     }
   }

@@ -1,28 +1,18 @@
 #pragma once
-// Support polygon of the NAO soles on level ground: one sole rectangle in single support, the
-// convex hull of both in double support (sole placement from nao_dimensions.hpp).
-#include <vector>
-
+// The support polygon of a pattern sample: the support sole in single support, the hull of both
+// soles in double support (robot/model/kinematics/support_polygon.hpp does the geometry).
 #include <Eigen/Core>
 
-#include "behaviours/walking/pattern/footsteps.hpp"
+#include "robot/model/kinematics/support_polygon.hpp"
 
 namespace stride::walking {
 
 struct PatternSample;
 
-using Polygon = std::vector<Eigen::Vector2d>;  // counter-clockwise
+model::ConvexPolygon support_polygon(const PatternSample& s);
+model::ConvexPolygon both_soles_polygon(const PatternSample& s);
 
-// The four sole corners of a foot whose sole-frame origin is at `origin` (right foot mirrored).
-Polygon sole_corners(Foot foot, const Eigen::Vector3d& origin);
-
-// Andrew's monotone chain; counter-clockwise, no repeated point.
-Polygon convex_hull(Polygon points);
-
-// Polygon of the feet on the ground at the sample's support phase.
-Polygon support_polygon(const PatternSample& s);
-
-// Smallest signed distance of p to the polygon's edge lines: >= 0 inside, < 0 outside.
-double inside_margin(const Polygon& ccw, const Eigen::Vector2d& p);
+// Signed distance of the sample's ZMP to its support polygon: >= 0 inside.
+double zmp_margin(const PatternSample& s);
 
 }  // namespace stride::walking
