@@ -85,6 +85,14 @@ NaoChain chain_option(const std::map<std::string, std::string>& o) {
   return *c;
 }
 
+// Fixed micro-units (um, urad) so that rounding noise never shows, and no "-0".
+std::string fmt(double x) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(6) << x;
+  std::string t = o.str();
+  return t.find_first_not_of("-0.") == std::string::npos && t[0] == '-' ? t.substr(1) : t;
+}
+
 Eigen::Vector3d roll_pitch_yaw(const Eigen::Matrix3d& r) {  // R = Rz(yaw) Ry(pitch) Rx(roll)
   return {std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
           std::atan2(r(1, 0), r(0, 0))};
@@ -103,11 +111,11 @@ Eigen::Isometry3d pose_from(const std::vector<double>& p) {
 void print_pose(std::ostream& out, const Eigen::Isometry3d& t, bool json) {
   const Eigen::Vector3d p = t.translation(), r = roll_pitch_yaw(t.linear());
   if (json) {
-    out << "{\"position\": [" << p.x() << ", " << p.y() << ", " << p.z() << "], \"rpy\": [" << r.x()
-        << ", " << r.y() << ", " << r.z() << "]}\n";
+    out << "{\"position\": [" << fmt(p.x()) << ", " << fmt(p.y()) << ", " << fmt(p.z())
+        << "], \"rpy\": [" << fmt(r.x()) << ", " << fmt(r.y()) << ", " << fmt(r.z()) << "]}\n";
   } else {
-    out << "position (m):      " << p.x() << " " << p.y() << " " << p.z() << "\n"
-        << "roll pitch yaw:    " << r.x() << " " << r.y() << " " << r.z() << "\n";
+    out << "position (m):      " << fmt(p.x()) << " " << fmt(p.y()) << " " << fmt(p.z()) << "\n"
+        << "roll pitch yaw:    " << fmt(r.x()) << " " << fmt(r.y()) << " " << fmt(r.z()) << "\n";
   }
 }
 
@@ -157,9 +165,9 @@ int ik(Args args, std::ostream& out) {
         << ", \"q\": {";
   for (size_t i = 0; i < ids.size(); ++i) {
     if (json)
-      out << (i ? ", " : "") << "\"" << hal::name(ids[i]) << "\": " << q[i];
+      out << (i ? ", " : "") << "\"" << hal::name(ids[i]) << "\": " << fmt(q[i]);
     else
-      out << std::left << std::setw(16) << hal::name(ids[i]) << q[i] << "\n";
+      out << std::left << std::setw(16) << hal::name(ids[i]) << fmt(q[i]) << "\n";
   }
   if (json)
     out << "}}\n";
@@ -193,11 +201,11 @@ int com(Args args, std::ostream& out) {
   link_poses(m, q, poses);
   const Eigen::Vector3d c = centre_of_mass(m, poses);
   if (o.count("--json"))
-    out << "{\"com\": [" << c.x() << ", " << c.y() << ", " << c.z()
-        << "], \"mass\": " << m.total_mass() << "}\n";
+    out << "{\"com\": [" << fmt(c.x()) << ", " << fmt(c.y()) << ", " << fmt(c.z())
+        << "], \"mass\": " << fmt(m.total_mass()) << "}\n";
   else
-    out << "centre of mass (m, torso frame): " << c.x() << " " << c.y() << " " << c.z()
-        << "\ntotal mass (kg): " << m.total_mass() << "\n";
+    out << "centre of mass (m, torso frame): " << fmt(c.x()) << " " << fmt(c.y()) << " "
+        << fmt(c.z()) << "\ntotal mass (kg): " << fmt(m.total_mass()) << "\n";
   return 0;
 }
 
