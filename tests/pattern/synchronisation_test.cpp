@@ -78,5 +78,22 @@ TEST(SupportPhase, SingleSupportLastsTwoTsAroundEachBoundary) {
   EXPECT_DOUBLE_EQ(w.duration(), 15.0);
 }
 
+TEST(Pattern, RestsBeforeAndAfterTheWalkForAnyTime) {
+  const StretchedKneePattern w(preset("slow"));
+  const PatternSample end = w.sample(w.duration());
+  for (double t : {-1.0, 1e300, std::nan(""), -1e300}) {
+    const PatternSample s = w.sample(t);
+    const PatternSample& rest = (t > 0) ? end : w.sample(0.0);
+    EXPECT_EQ(s.waist, rest.waist) << t;
+    EXPECT_EQ(s.waist_velocity, Eigen::Vector3d::Zero()) << t;
+    EXPECT_EQ(s.left_foot, rest.left_foot) << t;
+    EXPECT_EQ(s.right_foot, rest.right_foot) << t;
+    EXPECT_EQ(s.support, SupportPhase::kDouble) << t;
+  }
+  EXPECT_EQ(end.left_foot.x(), end.waist.x());  // back over both feet
+  EXPECT_EQ(end.right_foot.x(), end.waist.x());
+  EXPECT_EQ(end.waist.y(), 0.0);
+}
+
 }  // namespace
 }  // namespace stride::walking

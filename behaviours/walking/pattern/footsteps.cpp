@@ -40,10 +40,12 @@ double Footsteps::swing_end(int j) const {
 
 Eigen::Vector3d Footsteps::foot(Foot f, double t) const {
   const double y = f == Foot::kLeft ? d_0_ : -d_0_;
+  if (!(t > 0.0)) return {0.0, y, 0.0};  // also NaN: before the walk
+  if (t >= steps_ * T_step_) return {foothold(steps_), y, 0.0};
   // Latest swing of this foot that has started by t.
   int j = std::min(static_cast<int>(std::floor((t + T_s_) / T_step_)), steps_);
   if (j >= 0 && swing_foot(j) != f) --j;
-  if (j < 0 || t <= 0.0) return {0.0, y, 0.0};
+  if (j < 0) return {0.0, y, 0.0};
   if (t >= swing_end(j)) return {foothold(j + 1), y, 0.0};
   const double from = foothold(j - 1), to = foothold(j + 1);
   const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
@@ -52,7 +54,7 @@ Eigen::Vector3d Footsteps::foot(Foot f, double t) const {
 }
 
 SupportPhase Footsteps::support(double t) const {
-  if (t <= 0.0 || t >= steps_ * T_step_) return SupportPhase::kDouble;
+  if (!(t > 0.0 && t < steps_ * T_step_)) return SupportPhase::kDouble;
   const int k = static_cast<int>(std::floor(t / T_step_ + 0.5));  // nearest boundary
   if (t < swing_start(k) || t >= swing_end(k)) return SupportPhase::kDouble;
   return swing_foot(k) == Foot::kLeft ? SupportPhase::kRight : SupportPhase::kLeft;

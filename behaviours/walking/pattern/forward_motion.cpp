@@ -99,7 +99,7 @@ Motion1d ForwardMotion::segment_at(const Segment& s, double u) const {
 }
 
 Motion1d ForwardMotion::at(double t) const {
-  if (t <= 0.0) return {0.0, 0.0, 0.0};
+  if (!(t > 0.0)) return {0.0, 0.0, 0.0};  // also NaN
   if (t >= duration()) return {start_.back(), 0.0, 0.0};
   const int j = std::min(static_cast<int>(t / T_step_), steps() - 1);
   Motion1d m = segment_at(segments_[j], t - j * T_step_);

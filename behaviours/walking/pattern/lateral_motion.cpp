@@ -30,7 +30,7 @@ LateralMotion::LateralMotion(const PatternParameters& p)
 
 Motion1d LateralMotion::at(double t) const {
   const double end = steps_ * T_step_;
-  if (t <= 0.0 || t >= end) return {};
+  if (!(t > 0.0 && t < end)) return {};
   if (t < T_step_) return first_.at(t);  // Eq. 3.7
   if (t > end - T_step_) {
     // Last step: the first step played backwards, on the side where the cosine arrives.

@@ -16,7 +16,7 @@ Motion1d sagittal_step(double z_min, double z_max, double T_s, double T_d, doubl
 
 Motion1d waist_height(const PatternParameters& p, double t) {
   const double T = p.T_step();
-  if (t <= 0.0 || t >= p.steps * T) return {p.z_max, 0.0, 0.0};
+  if (!(t > 0.0 && t < p.steps * T)) return {p.z_max, 0.0, 0.0};
   const int j = std::min(static_cast<int>(t / T), p.steps - 1);
   return sagittal_step(p.z_min, p.z_max, p.T_s(), p.T_d(), t - j * T);
 }
