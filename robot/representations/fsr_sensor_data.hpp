@@ -15,9 +15,9 @@ struct FsrSensorData {
   bool contact_right = false;
   Eigen::Vector2d cop_left = Eigen::Vector2d::Zero();  // left ankle frame (x, y), 0 without contact
   Eigen::Vector2d cop_right = Eigen::Vector2d::Zero();  // right ankle frame
-  // TODO(kinematics): overall CoP in the torso frame needs forward kinematics (robot/model/),
-  // which does not exist yet; until then cop_torso stays zero and cop_torso_valid false.
-  Eigen::Vector2d cop_torso = Eigen::Vector2d::Zero();
+  // Overall CoP in the torso frame: both feet's CoPs through leg forward kinematics, weighted
+  // by their forces; valid when any force is measured.
+  Eigen::Vector3d cop_torso = Eigen::Vector3d::Zero();
   bool cop_torso_valid = false;
 
   static constexpr std::string_view kTypeName = "FsrSensorData";

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 
 namespace stride {
@@ -27,6 +28,18 @@ FsrSensorData fsr_sensor_data(const hal::SensorFrame& s, double contact_force) {
   f.contact_right = f.total_right > contact_force;
   f.cop_left = foot_cop(s.fsr.data(), nao::kFsrPositions.data());
   f.cop_right = foot_cop(s.fsr.data() + 4, nao::kFsrPositions.data() + 4);
+  const double total = f.total_left + f.total_right;
+  f.cop_torso_valid = total > 0;
+  if (!f.cop_torso_valid) return f;
+  // FSR positions lie in the sole plane, which is z = 0 of leg_fk's sole frame.
+  auto in_torso = [&](model::Side side, const Eigen::Vector2d& cop) {
+    model::LegAngles q{};
+    model::gather_chain(model::leg_chain(side), s.position, std::span<double>(q));
+    return model::leg_fk(side, q) * Eigen::Vector3d(cop.x(), cop.y(), 0);
+  };
+  f.cop_torso = (f.total_left * in_torso(model::Side::Left, f.cop_left) +
+                 f.total_right * in_torso(model::Side::Right, f.cop_right)) /
+                total;
   return f;
 }
 
