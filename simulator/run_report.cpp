@@ -34,6 +34,16 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
     j.field("x", p.x).field("y", p.y).field("z", p.z);
     j.field("roll", p.roll).field("pitch", p.pitch).field("yaw", p.yaw);
     j.end_object();
+    const WalkMetricsResult w = sim.walk_metrics(i).result();
+    j.key("walk").begin_object();
+    j.field("steps", w.steps).field("fk_distance", w.fk_distance);
+    j.field("true_distance", w.true_distance).field("torso_distance", w.torso_distance);
+    j.field("duration", w.duration).field("fk_speed", w.fk_speed).field("true_speed", w.true_speed);
+    j.field("mean_step_length", w.mean_step_length);
+    j.field("pitch_min", w.pitch_min).field("pitch_max", w.pitch_max);
+    j.field("roll_min", w.roll_min).field("roll_max", w.roll_max);
+    j.field("fell", w.fell).field("fell_at", w.fell_at);
+    j.end_object();
     j.end_object();
   }
   j.end_array();
@@ -57,6 +67,8 @@ std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
     o << "  " << r.name() << ": torso x " << p.x << " y " << p.y << " z " << p.z << " m  roll "
       << p.roll << " pitch " << p.pitch << " yaw " << p.yaw << " rad  "
       << (r.fallen() ? "FELL" : "upright") << "\n";
+    const WalkMetricsResult w = sim.walk_metrics(i).result();
+    if (w.steps > 0) o << "  walk: " << walk_metrics_text(w) << "\n";
   }
   return o.str();
 }

@@ -65,6 +65,7 @@ void Simulation::build() {
   robots_ = std::move(robots);
   steps_per_frame_ = std::move(steps_per_frame);
   controllers_.resize(robots_.size());
+  walk_metrics_.assign(robots_.size(), WalkMetrics());
   pushes_ = std::move(pushes);
   steps_ = 0;
 }
@@ -106,6 +107,7 @@ void Simulation::step() {
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (steps_ % static_cast<std::uint64_t>(steps_per_frame_[i]) != 0) continue;
     robots_[i]->sample_sensors(time(), scene_.physics.gravity);
+    walk_metrics_[i].observe(*robots_[i]);
     if (controllers_[i]) controllers_[i](*robots_[i]);
   }
 }

@@ -10,6 +10,7 @@
 
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/simulated_robot.hpp"
+#include "simulator/walk_metrics.hpp"
 #include "simulator/world/physics_world.hpp"
 
 namespace stride::sim {
@@ -55,6 +56,9 @@ class Simulation {
   void push(const std::string& robot, const std::string& link, const Eigen::Vector3d& force,
             const Eigen::Vector3d& at, double duration);
 
+  // Walking figures of robot `i` since the scene (re)started.
+  const WalkMetrics& walk_metrics(int robot) const { return walk_metrics_[robot]; }
+
   // FNV-1a over every body's state and the robots' latest sensor frames.
   std::uint64_t state_hash() const;
 
@@ -67,6 +71,7 @@ class Simulation {
   std::vector<std::unique_ptr<SimulatedRobot>> robots_;
   std::vector<int> steps_per_frame_;
   std::vector<Controller> controllers_;
+  std::vector<WalkMetrics> walk_metrics_;
   std::vector<ActivePush> pushes_;
   std::uint64_t steps_ = 0;
 };

@@ -1,0 +1,84 @@
+#include "simulator/walk_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "robot/model/kinematics/nao_fk.hpp"
+
+namespace stride::sim {
+namespace {
+
+double sole_x_from_fk(const hal::SensorFrame& s, model::Side side) {
+  model::LegAngles q{};
+  model::gather_chain(model::leg_chain(side), s.position, q);
+  return model::leg_fk(side, q).translation().x();
+}
+
+}  // namespace
+
+void WalkMetrics::observe(const SimulatedRobot& robot) {
+  const hal::SensorFrame& s = robot.latest_sensors();
+  const TorsoPose torso = robot.torso_pose();
+  const auto& m = robot.model();
+  const double xl = robot.body().link_pose(m.link_index("LFoot")).translation().x();
+  const double xr = robot.body().link_pose(m.link_index("RFoot")).translation().x();
+  t_ = s.time;
+  x_mid_ = 0.5 * (xl + xr);
+  x_torso_ = torso.x;
+  if (!started_) {
+    started_ = true;
+    t0_ = s.time;
+    x0_mid_ = x_mid_;
+    x0_torso_ = torso.x;
+    r_.pitch_min = r_.pitch_max = torso.pitch;
+    r_.roll_min = r_.roll_max = torso.roll;
+  }
+  r_.pitch_min = std::min(r_.pitch_min, torso.pitch);
+  r_.pitch_max = std::max(r_.pitch_max, torso.pitch);
+  r_.roll_min = std::min(r_.roll_min, torso.roll);
+  r_.roll_max = std::max(r_.roll_max, torso.roll);
+  if (!r_.fell && robot.fallen()) {
+    r_.fell = true;
+    r_.fell_at = s.time;
+  }
+  const double left = s.fsr[0] + s.fsr[1] + s.fsr[2] + s.fsr[3];
+  const double right = s.fsr[4] + s.fsr[5] + s.fsr[6] + s.fsr[7];
+  const bool both = left > threshold_ && right > threshold_;
+  const bool one = (left > threshold_) != (right > threshold_);
+  if (one) in_single_support_ = true;
+  if (both && in_single_support_) {  // a new double support: one step completed
+    in_single_support_ = false;
+    ++r_.steps;
+    r_.fk_distance +=
+        std::abs(sole_x_from_fk(s, model::Side::Left) - sole_x_from_fk(s, model::Side::Right));
+  }
+}
+
+WalkMetricsResult WalkMetrics::result() const {
+  WalkMetricsResult r = r_;
+  r.duration = t_ - t0_;
+  r.true_distance = x_mid_ - x0_mid_;
+  r.torso_distance = x_torso_ - x0_torso_;
+  if (r.duration > 0) {
+    r.fk_speed = r.fk_distance / r.duration;
+    r.true_speed = r.true_distance / r.duration;
+  }
+  r.mean_step_length = r.steps > 0 ? r.true_distance / r.steps : 0;
+  return r;
+}
+
+std::string walk_metrics_text(const WalkMetricsResult& r) {
+  std::ostringstream o;
+  o.setf(std::ios::fixed);
+  o.precision(4);
+  o << "steps " << r.steps << "  distance fk " << r.fk_distance << " m, true " << r.true_distance
+    << " m (torso " << r.torso_distance << " m) in " << r.duration << " s  speed fk " << r.fk_speed
+    << " m/s, true " << r.true_speed << " m/s  step " << r.mean_step_length << " m  pitch ["
+    << r.pitch_min << ", " << r.pitch_max << "] roll [" << r.roll_min << ", " << r.roll_max
+    << "] rad  " << (r.fell ? "FELL" : "did not fall");
+  if (r.fell) o << " at " << r.fell_at << " s";
+  return o.str();
+}
+
+}  // namespace stride::sim
