@@ -1,5 +1,6 @@
 #include "behaviours/module_catalogue.hpp"
 
+#include "behaviours/posture/posture_modules.hpp"
 #include "behaviours/stand/stand.hpp"
 #include "robot/runtime/nao_io_modules.hpp"
 
@@ -8,6 +9,7 @@ namespace stride::behaviours {
 void register_all_modules(ModuleRegistry& registry) {
   register_nao_io_modules(registry);
   register_stand(registry);
+  register_posture_modules(registry);
 }
 
 }  // namespace stride::behaviours

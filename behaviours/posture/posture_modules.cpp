@@ -1,0 +1,188 @@
+// The Ch. 4 posture-control modules (see posture_modules.hpp for the data flow).
+#include "behaviours/posture/posture_modules.hpp"
+
+#include "behaviours/posture/gyro_calibration.hpp"
+#include "behaviours/posture/posture_representations.hpp"
+#include "behaviours/posture/torso_kalman_filter.hpp"
+#include "behaviours/posture/walking_joint_request.hpp"
+#include "robot/model/kinematics/nao_fk.hpp"
+#include "robot/representations/frame_info.hpp"
+#include "robot/representations/inertial_sensor_data.hpp"
+#include "robot/representations/joint_request.hpp"
+
+namespace stride::behaviours {
+
+using hal::index;
+using hal::JointId;
+
+namespace {
+
+class GyroCalibration final : public Module {
+ public:
+  explicit GyroCalibration(ModuleContext& c)
+      : inertial_(c.require<InertialSensorData>()),
+        params_(c.parameters<GyroCalibrationParameters>()),
+        out_(c.provide<CalibratedGyro>()) {}
+
+  void update() override {
+    const Eigen::Vector2d measured = inertial_.gyro.head<2>();
+    out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eqs. 4.1-4.2
+    out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eqs. 4.3-4.4
+  }
+
+ private:
+  const InertialSensorData& inertial_;
+  const GyroCalibrationParameters& params_;
+  CalibratedGyro& out_;
+};
+
+class TorsoStateEstimator final : public Module {
+ public:
+  explicit TorsoStateEstimator(ModuleContext& c)
+      : frame_(c.require<FrameInfo>()),
+        inertial_(c.require<InertialSensorData>()),
+        gyro_(c.require<CalibratedGyro>()),
+        params_(c.parameters<TorsoStateEstimatorParameters>()),
+        out_(c.provide<TorsoState>()) {}
+
+  void update() override {
+    if (!started_) {
+      filter_ = initial_torso_filter(params_.initial_variance);
+      started_ = true;
+    }
+    // Measurement y_k = x_k + v (Eq. 4.7, C = I): IMU angles and calibrated rates.
+    const TorsoVector y(inertial_.angles.y(), inertial_.angles.x(), gyro_.rate.y(), gyro_.rate.x());
+    torso_kalman_step(filter_, torso_transition(frame_.period), params_.q_diagonal,
+                      params_.r_diagonal, y);
+    out_.pitch = filter_.x[0];
+    out_.roll = filter_.x[1];
+    out_.pitch_rate = filter_.x[2];
+    out_.roll_rate = filter_.x[3];
+    out_.variance = filter_.p.diagonal();
+    out_.gain = filter_.gain.diagonal();
+  }
+
+ private:
+  const FrameInfo& frame_;
+  const InertialSensorData& inertial_;
+  const CalibratedGyro& gyro_;
+  const TorsoStateEstimatorParameters& params_;
+  TorsoState& out_;
+  TorsoKalmanFilter filter_;
+  bool started_ = false;
+};
+
+// Hip (Eqs. 4.8-4.11) or ankle (Eqs. 4.12-4.15) strategy on the walking joint targets.
+template <PostureJoints Joints>
+class PostureStrategy final : public Module {
+ public:
+  explicit PostureStrategy(ModuleContext& c)
+      : reference_(c.require<WalkingJointRequest>()),
+        torso_(c.require<TorsoState>()),
+        params_(c.parameters<PostureStrategyParameters<Joints>>()),
+        out_(c.provide<PostureCorrectedRequest>()) {}
+
+  void update() override {
+    const Eigen::Vector4d desired(params_.desired_pitch, params_.desired_roll, 0, 0);
+    const Eigen::Vector2d delta = posture_correction(params_.gains(), desired, torso_.state());
+    out_.position = reference_.position;
+    out_.stiffness = reference_.stiffness;
+    apply_posture_correction(Joints, delta, out_.position);
+    out_.pitch_correction = delta[0];
+    out_.roll_correction = delta[1];
+  }
+
+ private:
+  const WalkingJointRequest& reference_;
+  const TorsoState& torso_;
+  const PostureStrategyParameters<Joints>& params_;
+  PostureCorrectedRequest& out_;
+};
+
+// Passes the walking targets through: the "no posture control" runs of Sec. 4.3.4.
+class NoPostureControl final : public Module {
+ public:
+  explicit NoPostureControl(ModuleContext& c)
+      : reference_(c.require<WalkingJointRequest>()), out_(c.provide<PostureCorrectedRequest>()) {}
+
+  void update() override {
+    out_.position = reference_.position;
+    out_.stiffness = reference_.stiffness;
+    out_.pitch_correction = out_.roll_correction = 0;
+  }
+
+ private:
+  const WalkingJointRequest& reference_;
+  PostureCorrectedRequest& out_;
+};
+
+// Shoulder pitch around the walking request's arm posture, from the planned feet (Sec. 4.4).
+class ArmSwing final : public Module {
+ public:
+  explicit ArmSwing(ModuleContext& c)
+      : reference_(c.require<WalkingJointRequest>()),
+        params_(c.parameters<ArmSwingParameters>()),
+        out_(c.provide<ArmSwingRequest>()) {}
+
+  void update() override {
+    const double left_x = foot_x(model::Side::Left);
+    const double right_x = foot_x(model::Side::Right);
+    ArmSwingModel m = params_.model();
+    m.swing_leg_mass *= params_.gain_scale;  // scales x_a of Eq. 4.20
+    const ArmSwingOffsets o = arm_swing_offsets(m, left_x, right_x);
+    out_.left_arm_displacement = o.left_displacement;
+    out_.right_arm_displacement = o.right_displacement;
+    out_.left_shoulder_pitch =
+        reference_.position[index(JointId::LShoulderPitch)] + o.left_shoulder_pitch;
+    out_.right_shoulder_pitch =
+        reference_.position[index(JointId::RShoulderPitch)] + o.right_shoulder_pitch;
+  }
+
+ private:
+  double foot_x(model::Side side) const {
+    model::LegAngles q{};
+    model::gather_chain(model::leg_chain(side), reference_.position, q);
+    return model::leg_fk(side, q).translation().x();
+  }
+
+  const WalkingJointRequest& reference_;
+  const ArmSwingParameters& params_;
+  ArmSwingRequest& out_;
+};
+
+// Final joint targets: the corrected legs (and everything else) with the arm-swing shoulders.
+class WalkingJointRequestAssembler final : public Module {
+ public:
+  explicit WalkingJointRequestAssembler(ModuleContext& c)
+      : legs_(c.require<PostureCorrectedRequest>()),
+        arms_(c.require<ArmSwingRequest>()),
+        out_(c.provide<JointRequest>()) {}
+
+  void update() override {
+    out_.position = legs_.position;
+    out_.stiffness = legs_.stiffness;
+    out_.mode.fill(hal::ServoMode::Position);
+    out_.torque.fill(0);
+    out_.position[index(JointId::LShoulderPitch)] = arms_.left_shoulder_pitch;
+    out_.position[index(JointId::RShoulderPitch)] = arms_.right_shoulder_pitch;
+  }
+
+ private:
+  const PostureCorrectedRequest& legs_;
+  const ArmSwingRequest& arms_;
+  JointRequest& out_;
+};
+
+}  // namespace
+
+void register_posture_modules(ModuleRegistry& registry) {
+  registry.add<GyroCalibration>("GyroCalibration");
+  registry.add<TorsoStateEstimator>("TorsoStateEstimator");
+  registry.add<PostureStrategy<PostureJoints::Hip>>("HipStrategy");
+  registry.add<PostureStrategy<PostureJoints::Ankle>>("AnkleStrategy");
+  registry.add<NoPostureControl>("NoPostureControl");
+  registry.add<ArmSwing>("ArmSwing");
+  registry.add<WalkingJointRequestAssembler>("WalkingJointRequestAssembler");
+}
+
+}  // namespace stride::behaviours
