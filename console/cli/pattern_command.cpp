@@ -29,7 +29,8 @@ struct PatternOptions {
 };
 
 constexpr const char* kUsage =
-    "usage: stride pattern [--preset slow|medium|fast|fig3.14|fig3.16] [--set name=value ...] "
+    "usage: stride pattern [--preset slow|medium|fast|fig3.14|fig3.16|table4.4-5|-10|-15|-20] "
+    "[--set name=value ...] "
     "[--conventional] [--dt s] --csv out.csv [--plots dir]";
 
 double parse_period(const std::string& text) {

@@ -171,11 +171,30 @@ PatternParameters preset(const std::string& name) {
     }
     return p;
   }
-  throw Error("unknown pattern preset '" + name + "' (slow, medium, fast, fig3.14, fig3.16)");
+  // Table 4.4 (energy comparison, Sec. 4.3.4.3): mean speed, step height and waist heights; the
+  // conventional pattern of Table 4.5 keeps z_conventional = 0.318 m and a 2 cm step height.
+  struct EnergyRow {
+    const char* name;
+    double speed, H_foot, z_min, z_max;
+  };
+  for (const EnergyRow& r : {EnergyRow{"table4.4-5", 0.0521, 0.020, 0.331, 0.332},
+                             EnergyRow{"table4.4-10", 0.0991, 0.020, 0.331, 0.332},
+                             EnergyRow{"table4.4-15", 0.1639, 0.024, 0.326, 0.327},
+                             EnergyRow{"table4.4-20", 0.2004, 0.024, 0.321, 0.322}}) {
+    if (name != r.name) continue;
+    p.H_foot = r.H_foot, p.z_min = r.z_min, p.z_max = r.z_max, p.steps = 80;  // 20 s
+    p.rhythmic = {r.speed - 0.005, r.speed + 0.005};
+    p.development = linear_levels(p.rhythmic, 3);
+    p.decay = linear_levels(p.rhythmic, 2);
+    return p;
+  }
+  throw Error("unknown pattern preset '" + name +
+              "' (slow, medium, fast, fig3.14, fig3.16, table4.4-5, -10, -15, -20)");
 }
 
 std::vector<std::string> preset_names() {
-  return {"slow", "medium", "fast", "fig3.14", "fig3.16"};
+  return {"slow",       "medium",      "fast",        "fig3.14",    "fig3.16",
+          "table4.4-5", "table4.4-10", "table4.4-15", "table4.4-20"};
 }
 
 void set_parameter(PatternParameters& p, const std::string& name, const std::string& value) {

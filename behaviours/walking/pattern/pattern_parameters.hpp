@@ -55,8 +55,9 @@ std::optional<std::string> validation_error(const PatternParameters& p);
 void validate(const PatternParameters& p);
 
 // Table 4.3 with the waist heights and lateral amplitudes of the three speeds of Sec. 4.3.4.2
-// ("slow", "medium", "fast"), and the plotting sets of Fig. 3.14 ("fig3.14") and Fig. 3.16
-// ("fig3.16"). Throws stride::Error for an unknown name.
+// ("slow", "medium", "fast"), the plotting sets of Fig. 3.14 ("fig3.14") and Fig. 3.16
+// ("fig3.16"), and the 20 s energy walks of Table 4.4 ("table4.4-5", "-10", "-15", "-20" cm/s).
+// Throws stride::Error for an unknown name.
 PatternParameters preset(const std::string& name);
 std::vector<std::string> preset_names();
 
