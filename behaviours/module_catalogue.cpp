@@ -2,6 +2,7 @@
 
 #include "behaviours/posture/posture_modules.hpp"
 #include "behaviours/stand/stand.hpp"
+#include "behaviours/walking/modules/pattern_walk.hpp"
 #include "robot/runtime/nao_io_modules.hpp"
 
 namespace stride::behaviours {
@@ -9,6 +10,7 @@ namespace stride::behaviours {
 void register_all_modules(ModuleRegistry& registry) {
   register_nao_io_modules(registry);
   register_stand(registry);
+  register_walking_modules(registry);
   register_posture_modules(registry);
 }
 

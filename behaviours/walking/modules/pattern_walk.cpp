@@ -1,0 +1,88 @@
+#include "behaviours/walking/modules/pattern_walk.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "behaviours/stand/stand.hpp"
+#include "behaviours/walking/modules/walk_parameters.hpp"
+#include "robot/representations/frame_info.hpp"
+#include "robot/representations/joint_sensor_data.hpp"
+
+namespace stride::behaviours {
+
+WalkingJointRequest walking_request(const walking::LegJoints& legs) {
+  const StandParameters stand;
+  WalkingJointRequest r;
+  r.position = stand_posture(stand);
+  r.stiffness.fill(stand.stiffness);
+  const auto left = model::chain_joints(model::NaoChain::LLeg);
+  const auto right = model::chain_joints(model::NaoChain::RLeg);
+  for (int i = 0; i < model::kLegJoints; ++i) {
+    r.position[hal::index(left[i])] = legs.left[i];
+    r.stiffness[hal::index(left[i])] = kWalkLegStiffness;
+  }
+  // The right chain starts with the shared LHipYawPitch, already set from the left leg.
+  for (int i = 1; i < model::kLegJoints; ++i) {
+    r.position[hal::index(right[i])] = legs.right[i];
+    r.stiffness[hal::index(right[i])] = kWalkLegStiffness;
+  }
+  return r;
+}
+
+double pattern_time(double frame_time, double first_frame_time, double start_delay) {
+  return frame_time - first_frame_time - start_delay;
+}
+
+namespace {
+
+template <class Pattern>
+class PatternPlayer final : public Module {
+ public:
+  explicit PatternPlayer(ModuleContext& c)
+      : frame_(c.require<FrameInfo>()),
+        joints_(c.require<JointSensorData>()),
+        params_(c.parameters<WalkParameters>()),
+        request_(c.provide<WalkingJointRequest>()) {}
+
+  void update() override {
+    if (!pattern_ || !same_walk_parameters(params_, built_from_)) {
+      pattern_.emplace(walk_pattern_parameters(params_));  // throws naming the bad parameter
+      built_from_ = params_;
+    }
+    if (!first_time_) {
+      first_time_ = frame_.time;
+      start_pose_ = joints_.position;
+    }
+    const double t = pattern_time(frame_.time, *first_time_, params_.start_delay);
+    const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
+    request_ = walking_request(walking::leg_joints(pattern_->sample(t_clamped)));
+    const double elapsed = frame_.time - *first_time_;
+    if (t >= 0 || elapsed >= params_.interpolation_time) return;
+    // Standing up: a cosine blend (zero velocity at both ends) from the measured pose.
+    const double blend =
+        0.5 - 0.5 * std::cos(std::numbers::pi * elapsed / params_.interpolation_time);
+    for (int i = 0; i < hal::kNumJoints; ++i)
+      request_.position[i] = start_pose_[i] + blend * (request_.position[i] - start_pose_[i]);
+  }
+
+ private:
+  const FrameInfo& frame_;
+  const JointSensorData& joints_;
+  const WalkParameters& params_;
+  WalkingJointRequest& request_;
+  std::optional<Pattern> pattern_;
+  WalkParameters built_from_;
+  std::optional<double> first_time_;
+  std::array<double, hal::kNumJoints> start_pose_{};
+};
+
+}  // namespace
+
+void register_walking_modules(ModuleRegistry& registry) {
+  registry.add<PatternPlayer<walking::StretchedKneePattern>>("PatternWalk");
+  registry.add<PatternPlayer<walking::ConventionalPattern>>("ConventionalWalk");
+}
+
+}  // namespace stride::behaviours
