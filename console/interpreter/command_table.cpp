@@ -1,0 +1,171 @@
+#include "console/interpreter/command_table.hpp"
+
+#include "console/interpreter/values.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::console {
+
+bool is_framework_key(std::string_view key) {
+  for (std::string_view prefix : {"representation:", "module:"})
+    if (key.starts_with(prefix) && key.size() > prefix.size() && key[prefix.size()] != '.')
+      return true;
+  return false;
+}
+
+bool is_value_key(std::string_view key) {
+  if (is_framework_key(key)) return true;
+  for (std::string_view prefix : {"sim.", "robot.", "log.", "provider:"})
+    if (key.starts_with(prefix) && key.size() > prefix.size()) return true;
+  return false;
+}
+
+namespace {
+
+void need_key(const std::string& key, bool framework_only) {
+  if (framework_only ? !is_framework_key(key) : !is_value_key(key))
+    throw Error(
+        "'" + key + "' is not a key (representation:X" +
+        std::string(framework_only ? " or module:X)" : ", module:X, sim.*, robot.*, log.*)"));
+}
+
+void check_run(const Words& a) {
+  if (!a.empty() && parse_number(a[0], "seconds") < 0) throw Error("seconds: expected >= 0");
+}
+void check_step(const Words& a) {
+  if (!a.empty()) parse_integer(a[0], "frames", 1, 1000000000);
+}
+void check_on_off(const Words& a) {
+  parse_on_off(a[0], "switch");
+}
+void check_get(const Words& a) {
+  need_key(a[0], false);
+  if (a.size() == 2 && a[1] != "?") throw Error("second argument must be '?'");
+}
+void check_set(const Words& a) {
+  need_key(a[0], true);
+  for (std::size_t i = 1; i < a.size(); ++i)
+    if (a[i].find('=') == std::string::npos || a[i].front() == '=')
+      throw Error("expected <field>=<value>, got '" + a[i] + "'");
+}
+void check_mr(const Words& a) {
+  if (a.size() == 1 && a[0] != "?") throw Error("give a module, default or ?");
+}
+void check_dr(const Words& a) {
+  if (a.size() == 1 && a[0] != "?") throw Error("give on or off");
+  if (a.size() == 2) parse_on_off(a[1], "switch");
+}
+void check_watch(const Words& a) {
+  if (a.size() == 1 && a[0] == "off") return;
+  std::size_t keys = a.size();
+  if (a.size() >= 2 && a[a.size() - 2] == "every") {
+    parse_integer(a.back(), "every", 1, 1000000000);
+    keys -= 2;
+  }
+  if (keys == 0) throw Error("give at least one key");
+  for (std::size_t i = 0; i < keys; ++i) need_key(a[i], false);
+}
+void check_plot(const Words& a) {
+  if (a.size() == 1 && (a[0] == "stop" || a[0] == "off")) return;
+  std::size_t keys = a.size();
+  if (a.size() >= 2 && a[a.size() - 2] == "to") keys -= 2;
+  if (keys == 0) throw Error("give at least one key");
+  for (std::size_t i = 0; i < keys; ++i) need_key(a[i], false);
+}
+void check_log(const Words& a) {
+  const std::string& s = a[0];
+  const std::size_t n = a.size() - 1;
+  if (s == "stop" || s == "replay") {
+    if (n != 0) throw Error("'log " + s + "' takes no arguments");
+  } else if (s == "start" || s == "load") {
+    if (n != 1) throw Error("'log " + s + "' takes one file");
+  } else if (s == "goto") {
+    if (n != 1) throw Error("'log goto' takes one frame number");
+    parse_integer(a[1], "frame", 0, 1000000000000LL);
+  } else if (s == "export") {
+    if (n < 2) throw Error("'log export' takes a csv file and at least one key");
+  } else {
+    throw Error("unknown log action '" + s + "' (start, stop, load, goto, export, replay)");
+  }
+}
+void check_push(const Words& a) {
+  const char* names[] = {"fx", "fy", "fz"};
+  for (int i = 0; i < 3; ++i) parse_number(a[i + 1], names[i]);
+  if (!(parse_number(a[4], "seconds") > 0)) throw Error("seconds: expected > 0");
+}
+void check_mv(const Words& a) {
+  const char* names[] = {"x", "y", "z", "yaw"};
+  for (std::size_t i = 0; i < a.size(); ++i) parse_number(a[i], names[i]);
+}
+void check_sn(const Words& a) {
+  if (a[0] != "noise" && a[0] != "delay" && a[0] != "quantise")
+    throw Error("expected noise, delay or quantise, got '" + a[0] + "'");
+  parse_on_off(a[1], a[0]);
+}
+void check_expect(const Words& a) {
+  need_key(a[0], false);
+  parse_op(a[1]);
+  if (a.size() == 4 && parse_number(a[3], "tolerance") < 0) throw Error("tolerance: expected >= 0");
+}
+void check_wait(const Words& a) {
+  if (a[0] != "until") throw Error("expected 'until', got '" + a[0] + "'");
+  if (a.size() == 5) throw Error("give 'timeout <seconds>' after the value");
+  check_expect({a[1], a[2], a[3]});
+  if (a.size() == 6) {
+    if (a[4] != "timeout") throw Error("expected 'timeout', got '" + a[4] + "'");
+    if (!(parse_number(a[5], "timeout") > 0)) throw Error("timeout: expected > 0");
+  }
+}
+
+}  // namespace
+
+const std::vector<CommandSpec>& command_table() {
+  static const std::vector<CommandSpec> table = {
+      {"help", "help [pattern]", "list commands (matching pattern)", 0, 1, nullptr},
+      {"load", "load <scene.xml>", "load a scene (runs <scene>.con next to it)", 1, 1, nullptr},
+      {"reset", "reset", "rebuild the scene from its description", 0, 0, nullptr},
+      {"run", "run [seconds]", "run the simulation (without seconds: until Ctrl-C)", 0, 1,
+       check_run},
+      {"step", "step [frames]", "advance by simulation steps (default 1)", 0, 1, check_step},
+      {"pause", "pause", "stop running", 0, 0, nullptr},
+      {"realtime", "realtime on|off", "pace runs to the wall clock", 1, 1, check_on_off},
+      {"get", "get <key> [?]", "print a value; ? prints the type description", 1, 2, check_get},
+      {"set", "set <key> <field>=<value>...", "change fields, all or nothing", 2, -1, check_set},
+      {"mr", "mr ? | mr <Rep> <Module>|default|?", "module request: choose a provider", 1, 2,
+       check_mr},
+      {"dr", "dr ? | dr <name> on|off", "debug request", 1, 2, check_dr},
+      {"watch", "watch <key>... [every N] | watch off", "print values every N steps while running",
+       1, -1, check_watch},
+      {"plot", "plot <key>... [to file.csv] | plot stop", "record values; stop writes CSV + PNG", 1,
+       -1, check_plot},
+      {"log", "log start <file>|stop|load <file>|goto <frame>|export <csv> <key>...|replay",
+       "record, load, browse, export and replay logs", 1, -1, check_log},
+      {"report", "report [file]", "run report (JSON with the state hash if a file is given)", 0, 1,
+       nullptr},
+      {"push", "push <body> <fx> <fy> <fz> <seconds>", "apply a force (N) to a link", 5, 5,
+       check_push},
+      {"mv", "mv <x> <y> <z> [yaw]", "move the robot (m, rad)", 3, 4, check_mv},
+      {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
+      {"expect", "expect <key> <op> <value> [tolerance]", "check a value; fails a script", 3, 4,
+       check_expect},
+      {"wait", "wait until <key> <op> <value> [timeout <seconds>]", "run until a condition holds",
+       4, 6, check_wait},
+      {"call", "call <file.con>", "run a script", 1, 1, nullptr},
+      {"echo", "echo <text>", "print text", 0, -1, nullptr},
+      {"quit", "quit", "leave the console", 0, 0, nullptr},
+  };
+  return table;
+}
+
+const CommandSpec* find_command(std::string_view name) {
+  for (const auto& s : command_table())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+std::vector<std::string> command_names() {
+  std::vector<std::string> out;
+  for (const auto& s : command_table()) out.emplace_back(s.name);
+  return out;
+}
+
+}  // namespace stride::console

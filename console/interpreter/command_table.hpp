@@ -1,0 +1,30 @@
+#pragma once
+// The console's vocabulary (DESIGN.md "Console"): name, usage, arity and an argument check per
+// command. Pure data and checks: no simulation is needed to parse, so the parser can be fuzzed.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stride::console {
+
+using Words = std::vector<std::string>;
+
+struct CommandSpec {
+  std::string_view name;
+  std::string_view usage;  // e.g. "run [seconds]"
+  std::string_view summary;
+  int min_args = 0;
+  int max_args = 0;  // -1: any number
+  // Throws stride::Error naming the bad argument; called only with an allowed argument count.
+  void (*check)(const Words& args) = nullptr;
+};
+
+const std::vector<CommandSpec>& command_table();
+const CommandSpec* find_command(std::string_view name);  // nullptr if unknown
+std::vector<std::string> command_names();
+
+// Keys the console reads: representation:X[.path], module:X[.path], sim.*, robot.*, log.*.
+bool is_value_key(std::string_view key);
+bool is_framework_key(std::string_view key);  // representation:X or module:X, with a name
+
+}  // namespace stride::console

@@ -1,0 +1,80 @@
+#pragma once
+// Executes parsed console commands against a Target. The interpreter keeps only console-side state
+// (watches, plot recording, realtime pacing, the script stack); everything else goes through the
+// Target, so the same commands work locally and remotely.
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "console/interpreter/command_parser.hpp"
+#include "console/plot/gnuplot_plot.hpp"
+#include "console/target/target.hpp"
+
+namespace stride::console {
+
+class Interpreter {
+ public:
+  Interpreter(Target& target, std::ostream& out);
+  ~Interpreter();
+
+  // One line; on failure throws stride::Error with a one-line message (nothing half-applied).
+  void execute(std::string_view line);
+  // Like execute, but prints "error: ..." and returns false instead of throwing (REPL use).
+  bool execute_reporting(std::string_view line);
+  // Every line of a script in order; the first failure throws "file:line: message".
+  void run_script(const std::string& path);
+  // Commands separated by ';' (for `stride -c`); the first failure throws "-c:N: message".
+  void run_inline(std::string_view commands);
+
+  // Writes a pending plot (also done by `plot stop` and the destructor).
+  void finish();
+  bool quit_requested() const { return quit_; }
+  // Interactive sessions may `run` without a duration (until *interrupt becomes true).
+  void set_interactive(std::atomic<bool>* interrupt) { interrupt_ = interrupt; }
+  Target& target() { return target_; }
+
+ private:
+  void dispatch(const Command& c);
+  void load(const std::string& path);
+  std::string resolve(const std::string& path) const;  // relative to the running script first
+  // Advances up to `steps`; watches, plots, realtime and interrupts apply. `until` (may be null)
+  // stops the run when it returns true. Returns true if `until` became true.
+  bool advance(std::uint64_t steps, const std::function<bool()>& until);
+  void after_step();
+  std::uint64_t steps_for(double seconds) const;
+
+  void help(const std::vector<std::string>& a);
+  void get(const std::vector<std::string>& a);
+  void module_request(const std::vector<std::string>& a);
+  void debug_request(const std::vector<std::string>& a);
+  void watch(const std::vector<std::string>& a);
+  void plot(const std::vector<std::string>& a);
+  void log(const std::vector<std::string>& a);
+  void report(const std::vector<std::string>& a);
+  void expect(const std::vector<std::string>& a);
+  void wait_until(const std::vector<std::string>& a);
+
+  Target& target_;
+  std::ostream& out_;
+  std::atomic<bool>* interrupt_ = nullptr;
+  bool quit_ = false;
+  bool realtime_ = false;
+  std::vector<std::string> script_stack_;
+
+  std::vector<std::string> watch_keys_;
+  std::uint64_t watch_every_ = 1;
+  std::uint64_t steps_since_watch_ = 0;
+
+  std::vector<std::string> plot_keys_;
+  std::string plot_file_;
+  plot::Table plot_table_;
+
+  std::chrono::steady_clock::time_point run_wall_start_;
+  double run_sim_start_ = 0;
+};
+
+}  // namespace stride::console

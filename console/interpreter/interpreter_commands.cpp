@@ -1,0 +1,193 @@
+// The commands of Interpreter that need more than one line: help, get, mr, dr, watch, plot, log,
+// report, expect, wait until.
+#include <cmath>
+#include <fstream>
+#include <ostream>
+
+#include "console/interpreter/command_table.hpp"
+#include "console/interpreter/interpreter.hpp"
+#include "console/interpreter/values.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::console {
+
+void Interpreter::help(const std::vector<std::string>& a) {
+  int shown = 0;
+  for (const auto& s : command_table()) {
+    const bool match = a.empty() || s.name.find(a[0]) != std::string_view::npos ||
+                       s.summary.find(a[0]) != std::string_view::npos;
+    if (!match) continue;
+    out_ << "  " << s.usage << "\n      " << s.summary << "\n";
+    ++shown;
+  }
+  if (shown == 0) out_ << "no command matches '" << a[0] << "'\n";
+}
+
+void Interpreter::get(const std::vector<std::string>& a) {
+  if (a.size() == 2) {
+    out_ << describe_text(target_.type_of(a[0]));
+    return;
+  }
+  out_ << target_.get(a[0]) << "\n";
+}
+
+void Interpreter::module_request(const std::vector<std::string>& a) {
+  auto line = [&](const std::string& rep) {
+    const std::string by = target_.provider_of(rep);
+    out_ << rep << ": " << (by.empty() ? "(built in)" : by);
+    const auto options = target_.providers_available(rep);
+    if (!options.empty()) {
+      out_ << "  available:";
+      for (const auto& m : options) out_ << " " << m;
+    }
+    out_ << "\n";
+  };
+  if (a[0] == "?") {
+    for (const auto& rep : target_.representations()) line(rep);
+    return;
+  }
+  if (a.size() == 1 || a[1] == "?") return line(a[0]);
+  target_.swap_provider(a[0], a[1]);
+  out_ << a[0] << " <- " << target_.provider_of(a[0]) << "\n";
+}
+
+void Interpreter::debug_request(const std::vector<std::string>& a) {
+  if (a[0] == "?") {
+    const auto all = target_.debug_requests();
+    if (all.empty()) out_ << "(no debug requests)\n";
+    for (const auto& [name, on] : all) out_ << name << " " << (on ? "on" : "off") << "\n";
+    return;
+  }
+  target_.set_debug_request(a[0], parse_on_off(a[1], a[0]));
+}
+
+void Interpreter::watch(const std::vector<std::string>& a) {
+  if (a.size() == 1 && a[0] == "off") {
+    watch_keys_.clear();
+    return;
+  }
+  std::vector<std::string> keys(a.begin(), a.end());
+  std::uint64_t every = 1;
+  if (a.size() >= 2 && a[a.size() - 2] == "every") {
+    every = static_cast<std::uint64_t>(parse_integer(a.back(), "every", 1, 1000000000));
+    keys.resize(keys.size() - 2);
+  }
+  for (const auto& k : keys) target_.get(k);  // unknown keys fail now, not while running
+  watch_keys_ = std::move(keys);
+  watch_every_ = every;
+  steps_since_watch_ = 0;
+}
+
+void Interpreter::plot(const std::vector<std::string>& a) {
+  if (a.size() == 1 && (a[0] == "stop" || a[0] == "off")) {
+    if (plot_keys_.empty()) throw Error("plot: nothing is being recorded");
+    finish();
+    return;
+  }
+  std::vector<std::string> keys(a.begin(), a.end());
+  std::string file = "plot.csv";
+  if (a.size() >= 2 && a[a.size() - 2] == "to") {
+    file = a.back();
+    keys.resize(keys.size() - 2);
+  }
+  for (const auto& k : keys) target_.get(k);
+  finish();
+  plot_keys_ = std::move(keys);
+  plot_file_ = file;
+  plot_table_ = plot::Table{};
+  plot_table_.columns.push_back("t");
+  for (const auto& k : plot_keys_) plot_table_.columns.push_back(k);
+  out_ << "recording " << plot_keys_.size() << " value(s) to " << plot_file_
+       << " while running (plot stop writes it)\n";
+}
+
+void Interpreter::finish() {
+  if (plot_keys_.empty()) return;
+  const std::vector<std::string> keys = std::move(plot_keys_);
+  plot_keys_.clear();
+  plot::write_csv(plot_file_, plot_table_);
+  out_ << "wrote " << plot_table_.rows.size() << " rows to " << plot_file_ << "\n";
+  if (plot::png_terminal().empty()) {
+    out_ << "gnuplot not found: no PNG\n";
+    return;
+  }
+  plot::PlotSpec spec;
+  spec.csv_path = plot_file_;
+  spec.x_column = "t";
+  for (const auto& k : keys) spec.series.push_back({k, k, ""});
+  spec.title = plot_file_;
+  spec.x_label = "t [s]";
+  const auto dot = plot_file_.rfind('.');
+  spec.png_path = (dot == std::string::npos ? plot_file_ : plot_file_.substr(0, dot)) + ".png";
+  plot::render_png(spec);
+  out_ << "wrote " << spec.png_path << "\n";
+}
+
+void Interpreter::log(const std::vector<std::string>& a) {
+  const std::string& what = a[0];
+  if (what == "start") {
+    target_.log_start(a[1]);
+    out_ << "logging to " << a[1] << "\n";
+  } else if (what == "stop") {
+    target_.log_stop();
+  } else if (what == "load") {
+    out_ << a[1] << ": " << target_.log_load(resolve(a[1])) << " frames\n";
+  } else if (what == "goto") {
+    const auto skipped = target_.log_goto(
+        static_cast<std::size_t>(parse_integer(a[1], "frame", 0, 1000000000000LL)));
+    out_ << "frame " << a[1] << " on the blackboard";
+    if (!skipped.empty()) out_ << " (" << skipped.size() << " representation(s) skipped)";
+    out_ << "\n";
+  } else if (what == "export") {
+    target_.log_export(a[1], {a.begin() + 2, a.end()});
+    out_ << "wrote " << a[1] << "\n";
+  } else if (what == "replay") {
+    const ReplaySummary r = target_.log_replay();
+    out_ << "replayed " << r.frames << " frames, compared " << r.compared
+         << " representations: " << r.mismatch_count << " mismatch(es)\n";
+    for (const auto& m : r.mismatches) out_ << "  " << m << "\n";
+  }
+}
+
+void Interpreter::report(const std::vector<std::string>& a) {
+  if (a.empty()) {
+    out_ << target_.report_text();
+    return;
+  }
+  const std::string json = target_.report_json();
+  std::ofstream f(a[0]);
+  if (!f) throw Error("report: cannot write '" + a[0] + "'");
+  f << json;
+  out_ << "wrote " << a[0] << "\n";
+}
+
+namespace {
+double tolerance_of(const std::vector<std::string>& a, std::size_t at, Op op) {
+  if (a.size() > at) return parse_number(a[at], "tolerance");
+  return op == Op::Near ? 1e-3 : 1e-12;  // ~= without tolerance: millimetre/milliradian level
+}
+}  // namespace
+
+void Interpreter::expect(const std::vector<std::string>& a) {
+  const Op op = parse_op(a[1]);
+  const std::string actual = target_.get(a[0]);
+  if (!compare(actual, op, a[2], tolerance_of(a, 3, op)))
+    throw Error("expect " + a[0] + " " + a[1] + " " + a[2] + " failed: actual " + actual);
+  out_ << "ok " << a[0] << " = " << actual << "\n";
+}
+
+void Interpreter::wait_until(const std::vector<std::string>& a) {
+  const Op op = parse_op(a[2]);
+  const double timeout = a.size() == 6 ? parse_number(a[5], "timeout") : 10.0;
+  const double tolerance = op == Op::Near ? 1e-3 : 1e-12;
+  auto holds = [&] { return compare(target_.get(a[1]), op, a[3], tolerance); };
+  if (holds() || advance(steps_for(timeout), holds)) {
+    out_ << "reached at t=" << target_.get("sim.time") << "\n";
+    return;
+  }
+  const std::string limit = a.size() == 6 ? a[5] : "10";
+  throw Error("wait: " + a[1] + " " + a[2] + " " + a[3] + " not reached within " + limit +
+              " s (value " + target_.get(a[1]) + ")");
+}
+
+}  // namespace stride::console

@@ -1,0 +1,23 @@
+#pragma once
+// Strict readers for command arguments and the comparison used by `expect` and `wait until`.
+#include <string>
+#include <string_view>
+
+namespace stride::console {
+
+// A finite number, the whole word; else stride::Error "<what>: expected a number, got 'x'".
+double parse_number(std::string_view word, const std::string& what);
+// An integer in [low, high].
+long long parse_integer(std::string_view word, const std::string& what, long long low,
+                        long long high);
+bool parse_on_off(std::string_view word, const std::string& what);
+bool is_number(std::string_view word);
+
+enum class Op { Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, Near };
+Op parse_op(std::string_view word);  // == != < <= > >= ~=
+std::string_view op_text(Op op);
+
+// Numbers compare numerically (== and ~= within `tolerance`); other words only by == and !=.
+bool compare(const std::string& actual, Op op, const std::string& expected, double tolerance);
+
+}  // namespace stride::console

@@ -1,0 +1,80 @@
+#include "console/repl/console_entry.hpp"
+
+#include <ostream>
+
+#include "console/interpreter/interpreter.hpp"
+#include "console/repl/repl.hpp"
+#include "console/target/local_target.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::console {
+
+namespace {
+struct ConsoleArgs {
+  std::string script;
+  std::string inline_commands;
+  bool has_inline = false;
+  std::string scene;
+};
+
+ConsoleArgs read_args(const std::vector<std::string>& args) {
+  ConsoleArgs c;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--script" || a == "-c") {
+      if (i + 1 >= args.size()) throw Error("stride: " + a + ": expected a value");
+      (a == "--script" ? c.script : c.inline_commands) = args[++i];
+      if (a == "-c") c.has_inline = true;
+    } else if (a.starts_with("-")) {
+      throw Error("stride: unknown flag '" + a + "' (see stride --help)");
+    } else if (c.scene.empty()) {
+      c.scene = a;
+    } else {
+      throw Error("stride: unexpected argument '" + a + "' (one scene at most)");
+    }
+  }
+  if (!c.script.empty() && c.has_inline) throw Error("stride: give --script or -c, not both");
+  return c;
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') q += '\\';
+    q += ch;
+  }
+  return q + "\"";
+}
+}  // namespace
+
+std::string console_usage() {
+  return "  stride [scene.xml]: interactive console (REPL)\n"
+         "  stride --script file.con [scene.xml]: run a script; exit 1 on the first failure\n"
+         "  stride -c \"cmd; cmd\" [scene.xml]: run commands; exit 1 on the first failure\n";
+}
+
+int console_main(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  ConsoleArgs c;
+  try {
+    c = read_args(args);
+  } catch (const Error& e) {
+    err << e.what() << "\n";
+    return 2;
+  }
+  LocalTarget target;
+  Interpreter interpreter(target, out);
+  const bool batch = !c.script.empty() || c.has_inline;
+  try {
+    if (!c.scene.empty()) interpreter.execute("load " + quoted(c.scene));
+    if (!c.script.empty()) interpreter.run_script(c.script);
+    if (c.has_inline) interpreter.run_inline(c.inline_commands);
+    if (batch) interpreter.finish();
+  } catch (const Error& e) {
+    out.flush();
+    err << e.what() << "\n";
+    if (batch) return 1;
+  }
+  return batch ? 0 : run_repl(interpreter);
+}
+
+}  // namespace stride::console

@@ -1,0 +1,228 @@
+#include "console/target/local_target.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "robot/core/error.hpp"
+#include "robot/runtime/replay.hpp"
+#include "simulator/run_report.hpp"
+#include "simulator/teleport.hpp"
+
+namespace stride::console {
+
+namespace {
+std::string number_text(double v) {
+  std::ostringstream o;
+  o.precision(10);
+  o << v;
+  return o.str();
+}
+}  // namespace
+
+LocalTarget::~LocalTarget() = default;
+
+std::string LocalTarget::name() const {
+  return session_ ? "local " + session_->simulation().scene().name : "local (no scene)";
+}
+
+SimSession& LocalTarget::session() {
+  if (!session_) throw Error("no scene loaded (use: load <scene.xml>)");
+  return *session_;
+}
+
+Runtime& LocalTarget::runtime() {
+  Runtime* rt = session().simulation().robot_count() > 0 ? session().runtime(0) : nullptr;
+  if (!rt) throw Error("robot 0 has no <controller> in this scene");
+  return *rt;
+}
+
+void LocalTarget::load(const std::string& scene_path) {
+  auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
+  session_ = std::move(fresh);
+  swapped_ = false;
+}
+
+void LocalTarget::reset() {
+  session().reset();
+  swapped_ = false;
+}
+
+std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
+  auto& sim = session().simulation();
+  std::uint64_t done = 0;
+  while (done < steps) {
+    sim.step();
+    ++done;
+    if (after_step && !after_step()) break;
+  }
+  return done;
+}
+
+double LocalTarget::step_seconds() const {
+  return session_ ? session_->simulation().scene().physics.step : 0.0;
+}
+
+std::string LocalTarget::sim_value(const std::string& key) {
+  if (key.starts_with("provider:")) {
+    const std::string rep = key.substr(9);
+    const auto names = runtime().representation_names();
+    if (std::find(names.begin(), names.end(), rep) == names.end())
+      throw Error("no representation '" + rep + "' on the blackboard");
+    const std::string by = runtime().provider_of(rep);
+    return by.empty() ? "(built-in)" : by;
+  }
+  if (key == "log.frames") {
+    if (!log_) throw Error("log.frames: no log loaded (log load <file>)");
+    return std::to_string(log_->frame_count());
+  }
+  if (key == "log.mismatches" || key == "log.compared" || key == "log.replayed") {
+    if (!replay_) throw Error(key + ": no replay yet (log replay)");
+    return std::to_string(key == "log.mismatches" ? replay_->mismatch_count
+                          : key == "log.compared" ? replay_->compared
+                                                  : replay_->frames);
+  }
+  auto& sim = session().simulation();
+  if (key == "sim.time") return number_text(sim.time());
+  if (key == "sim.steps") return std::to_string(sim.steps());
+  if (key == "sim.hash") return sim::hash_hex(sim.state_hash());
+  if (sim.robot_count() == 0) throw Error(key + ": the scene has no robot");
+  const auto& r = sim.robot(0);
+  if (key == "robot.fell") return r.fallen() ? "true" : "false";
+  const sim::TorsoPose p = r.torso_pose();
+  const std::pair<const char*, double> torso[] = {
+      {"robot.torso.x", p.x},       {"robot.torso.y", p.y},         {"robot.torso.z", p.z},
+      {"robot.torso.roll", p.roll}, {"robot.torso.pitch", p.pitch}, {"robot.torso.yaw", p.yaw}};
+  for (const auto& [k, v] : torso)
+    if (key == k) return number_text(v);
+  const Eigen::Vector3d com = r.body().centre_of_mass();
+  if (key == "robot.com.x") return number_text(com.x());
+  if (key == "robot.com.y") return number_text(com.y());
+  if (key == "robot.com.z") return number_text(com.z());
+  throw Error("unknown key '" + key +
+              "' (sim.time|steps|hash, robot.fell, robot.torso.x|y|z|roll|pitch|yaw, "
+              "robot.com.x|y|z, log.frames|mismatches|compared|replayed)");
+}
+
+std::string LocalTarget::get(const std::string& key) {
+  if (key.starts_with("representation:") || key.starts_with("module:")) return runtime().get(key);
+  return sim_value(key);
+}
+
+const TypeDesc& LocalTarget::type_of(const std::string& key) {
+  if (!key.starts_with("representation:") && !key.starts_with("module:"))
+    throw Error("'" + key + "' has no type description (a number computed by the simulator)");
+  return runtime().type_of(key);
+}
+
+void LocalTarget::set(const std::string& key, const std::string& fields) {
+  runtime().set(key, fields);
+}
+
+std::vector<std::string> LocalTarget::representations() {
+  return runtime().representation_names();
+}
+std::vector<std::string> LocalTarget::parameter_modules() {
+  return runtime().parameter_modules();
+}
+std::string LocalTarget::provider_of(const std::string& rep) {
+  return runtime().provider_of(rep);
+}
+std::vector<std::string> LocalTarget::providers_available(const std::string& rep) {
+  return runtime().providers_available(rep);
+}
+void LocalTarget::swap_provider(const std::string& rep, const std::string& module) {
+  runtime().swap_provider(rep, module);
+  swapped_ = module != "default";
+}
+std::vector<std::pair<std::string, bool>> LocalTarget::debug_requests() {
+  return runtime().debug_requests();
+}
+void LocalTarget::set_debug_request(const std::string& name, bool on) {
+  runtime().set_debug_request(name, on);
+}
+
+void LocalTarget::log_start(const std::string& path) {
+  Runtime& rt = runtime();
+  if (rt.logging()) throw Error("a log is already being recorded (log stop first)");
+  rt.start_log(path);
+}
+
+void LocalTarget::log_stop() {
+  Runtime& rt = runtime();
+  if (!rt.logging()) throw Error("no log is being recorded");
+  rt.stop_log();
+}
+
+std::size_t LocalTarget::log_load(const std::string& path) {
+  auto fresh = std::make_unique<LogReader>(path);
+  log_ = std::move(fresh);
+  replay_.reset();
+  return log_->frame_count();
+}
+
+std::vector<std::string> LocalTarget::log_goto(std::size_t frame) {
+  if (!log_) throw Error("no log loaded (log load <file>)");
+  if (frame >= log_->frame_count())
+    throw Error("frame " + std::to_string(frame) + " is outside the log's 0.." +
+                std::to_string(log_->frame_count() - 1));
+  return runtime().load_frame(*log_, frame);
+}
+
+void LocalTarget::log_export(const std::string& csv_path, const std::vector<std::string>& keys) {
+  if (!log_) throw Error("no log loaded (log load <file>)");
+  std::ostringstream csv;
+  export_csv(*log_, keys, csv);  // may throw on a bad key; nothing written then
+  std::ofstream f(csv_path);
+  if (!f) throw Error("cannot write '" + csv_path + "'");
+  f << csv.str();
+}
+
+ReplaySummary LocalTarget::log_replay() {
+  if (!log_) throw Error("no log loaded (log load <file>)");
+  if (swapped_) throw Error("a provider was swapped; the replay uses the scene's configuration");
+  const ReplayResult r =
+      replay_and_compare(*log_, session().registry(), session().runtime_config(0));
+  ReplaySummary s;
+  s.frames = r.frames;
+  s.compared = r.compared.size();
+  s.mismatch_count = r.mismatches.size();
+  for (std::size_t i = 0; i < r.mismatches.size() && i < 5; ++i)
+    s.mismatches.push_back("frame " + std::to_string(r.mismatches[i].frame) + ": " +
+                           r.mismatches[i].representation);
+  replay_ = s;
+  return s;
+}
+
+std::string LocalTarget::report_text() {
+  return sim::run_report_text(session().simulation(), {});
+}
+std::string LocalTarget::report_json() {
+  return sim::run_report_json(session().simulation(), {});
+}
+
+void LocalTarget::push(const std::string& body, double fx, double fy, double fz, double seconds) {
+  auto& sim = session().simulation();
+  if (sim.robot_count() == 0) throw Error("the scene has no robot");
+  sim.push(sim.robot(0).name(), body, {fx, fy, fz}, Eigen::Vector3d::Zero(), seconds);
+}
+
+void LocalTarget::move_robot(double x, double y, double z, double yaw) {
+  sim::teleport_robot(session().simulation(), 0, {x, y, z}, yaw);
+}
+
+void LocalTarget::sensor_switch(const std::string& which, bool on) {
+  auto& sim = session().simulation();
+  if (sim.robot_count() == 0) throw Error("the scene has no robot");
+  auto& s = sim.robot(0).sensor_switches();
+  if (which == "noise")
+    s.noise = on;
+  else if (which == "delay")
+    s.delay = on;
+  else if (which == "quantise")
+    s.quantise = on;
+  else
+    throw Error("unknown sensor switch '" + which + "' (noise, delay, quantise)");
+}
+
+}  // namespace stride::console

@@ -1,0 +1,63 @@
+#pragma once
+// The console target in this process: a SimSession (scene + controllers). Framework keys act on
+// robot 0's controller.
+#include <memory>
+#include <optional>
+
+#include "console/session/sim_session.hpp"
+#include "console/target/target.hpp"
+#include "robot/runtime/log.hpp"
+
+namespace stride::console {
+
+class LocalTarget final : public Target {
+ public:
+  LocalTarget() = default;
+  explicit LocalTarget(const std::string& scene_path) { load(scene_path); }
+  ~LocalTarget() override;
+
+  std::string name() const override;
+  bool loaded() const override { return session_ != nullptr; }
+  void load(const std::string& scene_path) override;
+  void reset() override;
+  std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
+  double step_seconds() const override;
+
+  std::string get(const std::string& key) override;
+  const TypeDesc& type_of(const std::string& key) override;
+  void set(const std::string& key, const std::string& fields) override;
+
+  std::vector<std::string> representations() override;
+  std::vector<std::string> parameter_modules() override;
+  std::string provider_of(const std::string& representation) override;
+  std::vector<std::string> providers_available(const std::string& representation) override;
+  void swap_provider(const std::string& representation, const std::string& module) override;
+  std::vector<std::pair<std::string, bool>> debug_requests() override;
+  void set_debug_request(const std::string& name, bool on) override;
+
+  void log_start(const std::string& path) override;
+  void log_stop() override;
+  std::size_t log_load(const std::string& path) override;
+  std::vector<std::string> log_goto(std::size_t frame) override;
+  void log_export(const std::string& csv_path, const std::vector<std::string>& keys) override;
+  ReplaySummary log_replay() override;
+
+  std::string report_text() override;
+  std::string report_json() override;
+  void push(const std::string& body, double fx, double fy, double fz, double seconds) override;
+  void move_robot(double x, double y, double z, double yaw) override;
+  void sensor_switch(const std::string& which, bool on) override;
+
+  SimSession& session();
+
+ private:
+  Runtime& runtime();
+  std::string sim_value(const std::string& key);
+
+  std::unique_ptr<SimSession> session_;
+  std::unique_ptr<LogReader> log_;
+  std::optional<ReplaySummary> replay_;
+  bool swapped_ = false;  // a provider swap makes the scene's configuration differ from the log's
+};
+
+}  // namespace stride::console

@@ -1,0 +1,66 @@
+#pragma once
+// What console commands act on. Every command goes through this interface, so the same
+// interpreter drives a local simulation (LocalTarget) or, later, a robot's debug server over TCP.
+// Methods throw stride::Error with a one-line message and change nothing on error.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "robot/framework/type_desc.hpp"
+
+namespace stride::console {
+
+struct ReplaySummary {
+  std::size_t frames = 0;
+  std::size_t compared = 0;             // representations compared every frame
+  std::vector<std::string> mismatches;  // "frame N: Rep", first few
+  std::size_t mismatch_count = 0;
+};
+
+class Target {
+ public:
+  virtual ~Target() = default;
+
+  virtual std::string name() const = 0;  // e.g. "local nao_stand_controlled"
+  virtual bool loaded() const = 0;
+  virtual void load(const std::string& scene_path) = 0;
+  virtual void reset() = 0;
+
+  // Advances up to `steps` simulation steps; after each one calls `after_step`, which returns
+  // false to stop early. Returns the steps done.
+  virtual std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) = 0;
+  virtual double step_seconds() const = 0;
+
+  // Values: representation:X[.path], module:X[.path], sim.time, sim.steps, sim.hash,
+  // robot.torso.{x,y,z,roll,pitch,yaw}, robot.fell, robot.com.{x,y,z}, log.frames, log.mismatches,
+  // provider:<Rep>.
+  virtual std::string get(const std::string& key) = 0;
+  virtual const TypeDesc& type_of(const std::string& key) = 0;
+  virtual void set(const std::string& key, const std::string& fields) = 0;
+
+  virtual std::vector<std::string> representations() = 0;
+  virtual std::vector<std::string> parameter_modules() = 0;
+  virtual std::string provider_of(const std::string& representation) = 0;
+  virtual std::vector<std::string> providers_available(const std::string& representation) = 0;
+  virtual void swap_provider(const std::string& representation, const std::string& module) = 0;
+  virtual std::vector<std::pair<std::string, bool>> debug_requests() = 0;
+  virtual void set_debug_request(const std::string& name, bool on) = 0;
+
+  virtual void log_start(const std::string& path) = 0;
+  virtual void log_stop() = 0;
+  virtual std::size_t log_load(const std::string& path) = 0;  // frames in the log
+  // Puts a loaded log frame onto the blackboard; returns the representations skipped.
+  virtual std::vector<std::string> log_goto(std::size_t frame) = 0;
+  virtual void log_export(const std::string& csv_path, const std::vector<std::string>& keys) = 0;
+  virtual ReplaySummary log_replay() = 0;
+
+  virtual std::string report_text() = 0;
+  virtual std::string report_json() = 0;
+  virtual void push(const std::string& body, double fx, double fy, double fz, double seconds) = 0;
+  virtual void move_robot(double x, double y, double z, double yaw) = 0;
+  virtual void sensor_switch(const std::string& which, bool on) = 0;
+};
+
+}  // namespace stride::console
