@@ -1,0 +1,79 @@
+// The scene and URDF parsers under hostile input, in every (sanitized) test run: the committed
+// corpus plus deterministic mutations of it must parse or fail with one stride::Error line.
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/fuzz_scene/scene_fuzz_target.hpp"
+
+namespace stride {
+namespace {
+
+std::vector<std::string> corpus() {
+  std::vector<std::string> out;
+  const auto dir = std::filesystem::path(STRIDE_SOURCE_DIR) / "tests/fuzz_scene/corpus";
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    std::ifstream in(e.path(), std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    out.push_back(ss.str());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string mutate(std::string s, std::mt19937_64& rng) {
+  static const char* kTokens[] = {"<",     ">",   "/>",    "\"",     "=",
+                                  "nan",   "-1",  "1e308", "<robot", "<include file=\"x.xml\"/>",
+                                  "&amp;", "deg", "mm",    " ",      "\0"};
+  const int edits = 1 + static_cast<int>(rng() % 4);
+  for (int k = 0; k < edits && !s.empty(); ++k) {
+    const size_t at = rng() % s.size();
+    switch (rng() % 4) {
+      case 0:
+        s[at] = static_cast<char>(rng() % 256);
+        break;
+      case 1:
+        s.erase(at, 1 + rng() % 16);
+        break;
+      case 2:
+        s.insert(at, kTokens[rng() % std::size(kTokens)]);
+        break;
+      case 3:
+        s.resize(at);
+        break;
+    }
+  }
+  return s;
+}
+
+TEST(SceneFuzz, CorpusAndMutationsParseOrFailWithOneLine) {
+  const auto seeds = corpus();
+  ASSERT_GE(seeds.size(), 4u);
+  std::mt19937_64 rng(7);
+  int errors = 0, parsed = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const std::string input =
+        i < static_cast<int>(seeds.size()) ? seeds[i] : mutate(seeds[rng() % seeds.size()], rng);
+    std::string msg;
+    ASSERT_NO_THROW(msg = test::parse_fuzz_input(
+                        reinterpret_cast<const std::uint8_t*>(input.data()), input.size()))
+        << "input " << i;
+    if (msg.empty()) {
+      ++parsed;
+      continue;
+    }
+    ++errors;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_NE(msg.find("fuzz."), std::string::npos) << "names the file: " << msg;
+  }
+  EXPECT_GT(errors, 100);
+  EXPECT_GT(parsed, 4);
+}
+
+}  // namespace
+}  // namespace stride
