@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include "robot/core/error.hpp"
@@ -78,6 +79,8 @@ JointType to_type(int t) {
 
 RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
   validate_urdf_text(xml, source_name);
+  // urdfdom logs its own multi-line messages; our error below is the one line the user sees.
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
   urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(xml);
   if (!urdf || !urdf->getRoot())
     throw error_at(source_name, 1,
