@@ -25,7 +25,8 @@ void Interpreter::help(const std::vector<std::string>& a) {
 
 void Interpreter::get(const std::vector<std::string>& a) {
   if (a.size() == 2) {
-    out_ << describe_text(target_.type_of(a[0]));
+    const std::string text = describe_text(target_.type_of(a[0]));
+    out_ << text << (text.ends_with('\n') ? "" : "\n");
     return;
   }
   out_ << target_.get(a[0]) << "\n";

@@ -12,6 +12,7 @@ home=$(mktemp -d)
 sock="stride_repl_test_$$"
 tm() { tmux -L "$sock" "$@"; }
 cleanup() { tm kill-server >/dev/null 2>&1; rm -rf "$home"; }
+# A fresh tmux server per session: restarting one on a dying socket races with its exit.
 trap cleanup EXIT
 fail() { echo "FAIL: $1"; echo "--- screen ---"; tm capture-pane -p -t t; exit 1; }
 # Waits until the screen shows text matching the regex $1 (up to 60 s).
@@ -25,7 +26,7 @@ wait_for() {
 start() {
   tm new-session -d -s t -x 160 -y 50 \
     "cd '$src' && HOME='$home' '$stride' scenes/nao_stand_controlled.xml; sleep 30"
-  wait_for 'stride> $'
+  wait_for '^stride> ?$'
 }
 
 start
@@ -46,9 +47,12 @@ tm send-keys -t t 'quit' Enter
 sleep 1
 grep -q 'echo history-marker-42' "$home/.stride_history" || fail "history file lacks the line"
 tm kill-server >/dev/null 2>&1
+sock="${sock}_second"
 
-# History across runs: Up brings back the last line of the previous session.
+# History across runs: Up brings back the previous session's lines, newest (quit) first.
 start
+tm send-keys -t t Up
+wait_for '^stride> quit$'
 tm send-keys -t t Up
 wait_for 'stride> echo history-marker-42'
 tm send-keys -t t Enter
