@@ -21,8 +21,10 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   const hal::SensorFrame& s = robot.latest_sensors();
   const TorsoPose torso = robot.torso_pose();
   const auto& m = robot.model();
-  const double xl = robot.body().link_pose(m.link_index("LFoot")).translation().x();
-  const double xr = robot.body().link_pose(m.link_index("RFoot")).translation().x();
+  const int lfoot = m.link_index("LFoot"), rfoot = m.link_index("RFoot");
+  if (lfoot < 0 || rfoot < 0) return;  // walking figures only for robots with NAO feet
+  const double xl = robot.body().link_pose(lfoot).translation().x();
+  const double xr = robot.body().link_pose(rfoot).translation().x();
   t_ = s.time;
   x_mid_ = 0.5 * (xl + xr);
   x_torso_ = torso.x;
