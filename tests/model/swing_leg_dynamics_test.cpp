@@ -101,6 +101,16 @@ TEST(SwingLeg3d, RegressorTimesParametersIsTheDynamics) {
   }
 }
 
+TEST(SwingLeg3d, CheapCoriolisVectorEqualsTheMatrixForm) {
+  std::mt19937 rng(16);
+  const Vector17d a = leg3d_parameters(thesis_3d_leg());
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto q = random_vector<5>(rng, 1.5), qd = random_vector<5>(rng, 3);
+    const Vector5d expected = leg3d_terms(q, qd, a).coriolis * qd;
+    EXPECT_LT((leg3d_coriolis_times_velocity(q, qd, a) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
 // With both rolls at zero the 3-D leg is the planar leg: J1 + J3 + J5 + J12 of the 3-D groups
 // is the planar J1, and so on.
 TEST(SwingLeg3d, ReducesToThePlanarModelWithoutRoll) {

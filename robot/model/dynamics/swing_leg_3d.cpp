@@ -114,14 +114,28 @@ void basis_with_derivatives(const Vector5d& q, BasisWithDerivatives& out) {
   }
 }
 
-// Eq. C.14: C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i, for basis matrix m.
-Matrix5d christoffel(const std::array<Basis<double>, 5>& dh, int m, const Vector5d& qd) {
+// Eq. C.14: C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i, with dh[i] = dH/dq_i.
+Matrix5d christoffel(const std::array<Matrix5d, 5>& dh, const Vector5d& qd) {
   Matrix5d c = Matrix5d::Zero();
   for (int k = 0; k < 5; ++k)
     for (int j = 0; j < 5; ++j)
       for (int i = 0; i < 5; ++i)
-        c(k, j) += 0.5 * (dh[i][m][k][j] + dh[j][m][k][i] - dh[k][m][i][j]) * qd[i];
+        c(k, j) += 0.5 * (dh[i](k, j) + dh[j](k, i) - dh[k](i, j)) * qd[i];
   return c;
+}
+
+// dH/dq_i of the weighted sum of basis matrices (a = unit vector: one basis matrix).
+std::array<Matrix5d, 5> inertia_derivatives(const std::array<Basis<double>, 5>& dh,
+                                            const Vector17d& a) {
+  std::array<Matrix5d, 5> out;
+  for (int i = 0; i < 5; ++i) {
+    out[i].setZero();
+    for (int k = 0; k < 14; ++k)
+      if (a[k] != 0)
+        for (int r = 0; r < 5; ++r)
+          for (int c = 0; c < 5; ++c) out[i](r, c) += a[k] * dh[i][k][r][c];
+  }
+  return out;
 }
 
 Matrix5d to_matrix(const std::array<std::array<double, 5>, 5>& b) {
@@ -129,6 +143,69 @@ Matrix5d to_matrix(const std::array<std::array<double, 5>, 5>& b) {
   for (int r = 0; r < 5; ++r)
     for (int c = 0; c < 5; ++c) m(r, c) = b[r][c];
   return m;
+}
+
+// Generalised momentum H(q) q' straight from the link velocities w_k = U_k q' (no 5x5 basis):
+// the cheap path for forward dynamics.
+template <typename T>
+std::array<T, 5> momentum(const std::array<T, 5>& q, const Vector5d& qd, const Vector17d& a) {
+  Dir<T> u1, u2, u3;
+  std::array<T, 3> uz;
+  directions(q, u1, u2, u3, uz);
+  const Dir<T>* u[3] = {&u1, &u2, &u3};
+  std::array<std::array<T, 3>, 3> w;  // w[k] = U_k q'
+  for (int k = 0; k < 3; ++k)
+    for (int r = 0; r < 3; ++r) {
+      T s(0.0);
+      for (int c = 0; c < 5; ++c) s += qd[c] * (*u[k])[r][c];
+      w[k][r] = s;
+    }
+  // dK/dq' = sum over the pairs (k, l) weights * U_k^T w_l, plus the rotational rates.
+  const double weight[3][3] = {
+      {a[0] + a[2] + a[4], a[8], a[6]}, {a[8], a[1] + a[5], a[7]}, {a[6], a[7], a[3]}};
+  std::array<T, 5> p;
+  for (int c = 0; c < 5; ++c) {
+    T s(0.0);
+    for (int k = 0; k < 3; ++k)
+      for (int l = 0; l < 3; ++l)
+        for (int r = 0; r < 3; ++r) s += weight[k][l] * ((*u[k])[r][c] * w[l][r]);
+    p[c] = s;
+  }
+  const double roll1 = qd[0], roll2 = qd[0] + qd[4], pitch1 = qd[1], pitch2 = qd[1] + qd[2],
+               pitch3 = qd[1] + qd[2] + qd[3];
+  p[0] += T(a[9] * roll1 + a[10] * roll2);
+  p[4] += T(a[10] * roll2);
+  p[1] += T(a[11] * pitch1 + a[12] * pitch2 + a[13] * pitch3);
+  p[2] += T(a[12] * pitch2 + a[13] * pitch3);
+  p[3] += T(a[13] * pitch3);
+  return p;
+}
+
+// C q' = H' q' - dK/dq (Lagrange), both by single dual passes over the momentum / energy.
+Vector5d bias(const Vector5d& q, const Vector5d& qd, const Vector17d& a) {
+  std::array<Dual, 5> along;
+  for (int j = 0; j < 5; ++j) along[j] = Dual(q[j], qd[j]);
+  const std::array<Dual, 5> p = momentum(along, qd, a);
+  Vector5d b;
+  for (int i = 0; i < 5; ++i) {
+    std::array<Dual, 5> qi;
+    for (int j = 0; j < 5; ++j) qi[j] = Dual(q[j], i == j ? 1.0 : 0.0);
+    const std::array<Dual, 5> pi = momentum(qi, qd, a);
+    double dk = 0;  // dK/dq_i = 1/2 q'^T (dH/dq_i) q'
+    for (int c = 0; c < 5; ++c) dk += 0.5 * qd[c] * pi[c].d;
+    b[i] = p[i].d - dk;
+  }
+  return b;
+}
+
+Matrix5d inertia_only(const Vector5d& q, const Vector17d& a) {
+  std::array<double, 5> qa;
+  for (int i = 0; i < 5; ++i) qa[i] = q[i];
+  Basis<double> b;
+  basis(qa, b);
+  Matrix5d h = Matrix5d::Zero();
+  for (int k = 0; k < 14; ++k) h += a[k] * to_matrix(b[k]);
+  return h;
 }
 
 }  // namespace
@@ -158,11 +235,9 @@ Leg3dTerms leg3d_terms(const Vector5d& q, const Vector5d& qd, const Vector17d& a
   std::array<Vector5d, 3> g;
   gravity_basis(q, g);
   Leg3dTerms t{Matrix5d::Zero(), Matrix5d::Zero(), Vector5d::Zero()};
-  for (int k = 0; k < 14; ++k) {
-    if (a[k] == 0) continue;
-    t.inertia += a[k] * to_matrix(b.h[k]);
-    t.coriolis += a[k] * christoffel(b.dh, k, qd);
-  }
+  for (int k = 0; k < 14; ++k)
+    if (a[k] != 0) t.inertia += a[k] * to_matrix(b.h[k]);
+  t.coriolis = christoffel(inertia_derivatives(b.dh, a), qd);
   for (int k = 0; k < 3; ++k) t.gravity += a[14 + k] * g[k];
   return t;
 }
@@ -175,25 +250,32 @@ Leg3dRegressor leg3d_regressor(const Vector5d& q, const Vector5d& qd, const Vect
   gravity_basis(q, g);
   Leg3dRegressor y;
   for (int k = 0; k < 14; ++k)
-    y.col(k) = to_matrix(b.h[k]) * qdd_r + christoffel(b.dh, k, qd) * qd_r;
+    y.col(k) = to_matrix(b.h[k]) * qdd_r +
+               christoffel(inertia_derivatives(b.dh, Vector17d::Unit(k)), qd) * qd_r;
   for (int k = 0; k < 3; ++k) y.col(14 + k) = g[k];
   return y;
 }
 
+Vector5d leg3d_coriolis_times_velocity(const Vector5d& q, const Vector5d& qd, const Vector17d& a) {
+  return bias(q, qd, a);
+}
+
 Vector5d leg3d_forward_dynamics(const Vector5d& q, const Vector5d& qd, const Vector5d& tau,
                                 const Vector17d& a) {
-  const Leg3dTerms t = leg3d_terms(q, qd, a);
-  return t.inertia.llt().solve(tau - t.coriolis * qd - t.gravity);
+  std::array<Vector5d, 3> g;
+  gravity_basis(q, g);
+  const Vector5d gravity = a[14] * g[0] + a[15] * g[1] + a[16] * g[2];
+  return inertia_only(q, a).llt().solve(tau - bias(q, qd, a) - gravity);
 }
 
 double leg3d_energy(const Vector5d& q, const Vector5d& qd, const Vector17d& a) {
-  const Leg3dTerms t = leg3d_terms(q, Vector5d::Zero(), a);
+  const Matrix5d h = inertia_only(q, a);
   std::array<double, 5> qa;
   for (int i = 0; i < 5; ++i) qa[i] = q[i];
   Dir<double> u1, u2, u3;
   std::array<double, 3> uz;
   directions(qa, u1, u2, u3, uz);
-  return 0.5 * qd.dot(t.inertia * qd) + a[14] * uz[0] + a[15] * uz[1] + a[16] * uz[2];
+  return 0.5 * qd.dot(h * qd) + a[14] * uz[0] + a[15] * uz[1] + a[16] * uz[2];
 }
 
 }  // namespace stride::model

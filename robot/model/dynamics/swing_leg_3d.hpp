@@ -39,6 +39,9 @@ Leg3dTerms leg3d_terms(const Vector5d& q, const Vector5d& qd, const Vector17d& a
 Leg3dRegressor leg3d_regressor(const Vector5d& q, const Vector5d& qd, const Vector5d& qd_r,
                                const Vector5d& qdd_r);
 
+// C q' alone (Coriolis and centrifugal torques), much cheaper than the full matrix C.
+Vector5d leg3d_coriolis_times_velocity(const Vector5d& q, const Vector5d& qd, const Vector17d& a);
+
 Vector5d leg3d_forward_dynamics(const Vector5d& q, const Vector5d& qd, const Vector5d& tau,
                                 const Vector17d& a);
 
