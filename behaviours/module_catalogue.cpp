@@ -1,5 +1,6 @@
 #include "behaviours/module_catalogue.hpp"
 
+#include "behaviours/balance/modules/balance_modules.hpp"
 #include "behaviours/posture/posture_modules.hpp"
 #include "behaviours/stand/stand.hpp"
 #include "behaviours/walking/modules/pattern_walk.hpp"
@@ -12,6 +13,7 @@ void register_all_modules(ModuleRegistry& registry) {
   register_stand(registry);
   register_walking_modules(registry);
   register_posture_modules(registry);
+  register_balance_modules(registry);
 }
 
 }  // namespace stride::behaviours

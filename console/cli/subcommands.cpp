@@ -10,10 +10,12 @@ int balance_main(Args args, std::ostream& out, std::ostream& err);
 int kin_main(Args args, std::ostream& out, std::ostream& err);
 int dyn_main(Args args, std::ostream& out, std::ostream& err);
 int pattern_main(Args args, std::ostream& out, std::ostream& err);
+int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"balance", "balance classify|ankle-boundaries|closed-loop|hip|combined|lqr [--x0 m --v0 m/s ...] [--json] [--csv f] [--plots dir]: Ch. 7 balance analysis", balance_main},
+      {"push-sweep", "push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step --directions 0,180 [--duration s] [--csv f] [--json]: Ch. 7 push experiments", push_sweep_main},
       {"run", "run <scene> --seconds S [--seed N] [--report out.json] [--log file]: headless simulation",
        run_main},
       {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics", kin_main},

@@ -1,0 +1,189 @@
+#include "behaviours/balance/modules/com_state_estimator.hpp"
+
+#include <memory>
+#include <span>
+
+#include "behaviours/balance/com_kalman_filter.hpp"
+#include "robot/model/kinematics/nao_fk.hpp"
+#include "robot/model/link_poses.hpp"
+#include "robot/model/urdf_loader.hpp"
+#include "robot/nao/nao_dimensions.hpp"
+#include "robot/representations/frame_info.hpp"
+#include "robot/representations/fsr_sensor_data.hpp"
+#include "robot/representations/inertial_sensor_data.hpp"
+#include "robot/representations/joint_sensor_data.hpp"
+
+namespace stride {
+
+balance::BalanceParams balance_params(const BalanceModel& m, double tau_forward,
+                                      double tau_backward) {
+  balance::BalanceParams p;
+  p.z_cm = m.com_height;
+  p.mass = m.mass;
+  p.zmp_min = m.zmp_min;
+  p.zmp_max = m.zmp_max;
+  p.inertia = m.hat_inertia;
+  p.tau_forward = tau_forward;
+  p.tau_backward = tau_backward;
+  p.theta_max_forward = m.theta_max_forward;
+  p.theta_max_backward = m.theta_max_backward;
+  return p;
+}
+
+}  // namespace stride
+
+namespace stride::behaviours {
+
+namespace {
+
+model::LegAngles leg_angles(model::Side side, const std::array<double, hal::kNumJoints>& lola) {
+  model::LegAngles q{};
+  model::gather_chain(model::leg_chain(side), lola, std::span<double>(q));
+  return q;
+}
+
+bool is_leg_link(const std::string& name) {
+  for (const char* leg : {"Pelvis", "Hip", "Thigh", "Tibia", "Ankle", "Foot"})
+    if (name == std::string("L") + leg || name == std::string("R") + leg) return true;
+  return false;
+}
+
+}  // namespace
+
+Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lola) {
+  const Eigen::Isometry3d left =
+      model::leg_fk(model::Side::Left, leg_angles(model::Side::Left, lola));
+  const Eigen::Isometry3d right =
+      model::leg_fk(model::Side::Right, leg_angles(model::Side::Right, lola));
+  Eigen::Isometry3d g = left;  // standing feet are parallel: the left sole's axes serve both
+  g.translation() = 0.5 * (left.translation() + right.translation());
+  return g;
+}
+
+Eigen::Isometry3d level_ground_from_torso(const std::array<double, hal::kNumJoints>& lola,
+                                          const Eigen::Vector2d& torso_roll_pitch) {
+  // The IMU's z-y-x angles without yaw: a sole that tips about its edge still reads level.
+  const Eigen::Matrix3d level = (Eigen::AngleAxisd(torso_roll_pitch.y(), Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(torso_roll_pitch.x(), Eigen::Vector3d::UnitX()))
+                                    .toRotationMatrix();
+  Eigen::Isometry3d g = Eigen::Isometry3d::Identity();
+  g.linear() = level;
+  g.translation() = -level * ground_in_torso(lola).translation();
+  return g;
+}
+
+KinematicCom::KinematicCom(model::RobotModel model)
+    : model_(std::move(model)),
+      map_(model::make_nao_joint_map(model_)),
+      q_(model::zero_joints(model_)) {}
+
+Eigen::Vector3d KinematicCom::in_torso(const std::array<double, hal::kNumJoints>& lola) {
+  model::joints_from_lola(model_, map_, lola, q_);
+  model::link_poses(model_, q_, poses_);
+  return model::centre_of_mass(model_, poses_);
+}
+
+BalanceModel KinematicCom::balance_model(const std::array<double, hal::kNumJoints>& lola) {
+  BalanceModel b;
+  const Eigen::Isometry3d ground = ground_in_torso(lola);
+  b.com_height = (ground.inverse() * in_torso(lola)).z();
+  b.mass = model_.total_mass();
+  // HAT = everything above the hips; its CoM distance to the hip pitch axis gives I (Sec. 7.5.1).
+  double hat_mass = 0, feet_mass = 0;
+  Eigen::Vector3d hat_moment = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < model_.links.size(); ++i) {
+    const auto& link = model_.links[i];
+    if (link.name == "LFoot" || link.name == "RFoot" || link.name == "LAnkle" ||
+        link.name == "RAnkle")
+      feet_mass += link.inertial.mass;
+    if (is_leg_link(link.name)) continue;
+    hat_mass += link.inertial.mass;
+    hat_moment += link.inertial.mass * (poses_[i] * link.inertial.com);
+  }
+  b.mass_above_ankles = b.mass - feet_mass;
+  const int lthigh = model_.link_index("LThigh"), rthigh = model_.link_index("RThigh");
+  const Eigen::Vector3d hip_axis =
+      0.5 * (poses_[lthigh].translation() + poses_[rthigh].translation());
+  Eigen::Vector3d d = hat_moment / hat_mass - hip_axis;
+  d.y() = 0;  // distance in the sagittal plane, perpendicular to the pitch axis
+  b.hat_inertia = hat_mass * d.squaredNorm();
+  b.zmp_min = nao::kSoleCentreX - nao::kSoleLength / 2;
+  b.zmp_max = nao::kSoleCentreX + nao::kSoleLength / 2;
+  // HAT angle theta = -(hip pitch - standing hip pitch): trunk forward is hip flexion (< 0).
+  const auto& hip = model_.joints[model_.joint_index("LHipPitch")];
+  const double stand = lola[hal::index(hal::JointId::LHipPitch)];
+  b.theta_max_forward = stand - hip.lower;
+  b.theta_max_backward = stand - hip.upper;
+  b.valid = true;
+  return b;
+}
+
+namespace {
+
+class ComStateEstimator final : public Module {
+ public:
+  explicit ComStateEstimator(ModuleContext& c)
+      : frame_(c.require<FrameInfo>()),
+        joints_(c.require<JointSensorData>()),
+        fsr_(c.require<FsrSensorData>()),
+        inertial_(c.require<InertialSensorData>()),
+        params_(c.parameters<ComStateEstimatorParameters>()),
+        state_(c.provide<ComState>()),
+        model_out_(c.provide<BalanceModel>()) {}
+
+  void update() override {
+    if (!com_) {
+      com_ = std::make_unique<KinematicCom>(model::load_urdf(params_.urdf));
+      model_out_ = com_->balance_model(joints_.position);  // first frame: the standing posture
+    }
+    const Eigen::Isometry3d torso_to_ground =
+        params_.use_imu_tilt ? level_ground_from_torso(joints_.position, inertial_.angles)
+                             : ground_in_torso(joints_.position).inverse();
+    const Eigen::Vector3d com = torso_to_ground * com_->in_torso(joints_.position);
+    state_.measured_com = com;
+    state_.com_height = com.z();
+    if (!fsr_.cop_torso_valid || !(frame_.period > 0) || !(com.z() > 0)) return;
+    const Eigen::Vector3d cop = torso_to_ground * fsr_.cop_torso;
+    state_.measured_cop = cop.head<2>();
+    if (!state_.valid) {
+      estimate_.x << com.x(), 0, cop.x(), com.y(), 0, cop.y();
+      estimate_.P = balance::ComFilterCovariance::Identity() * 1e-4;
+    }
+    const auto filter =
+        balance::com_filter_model(com.z(), params_.g, frame_.period, params_.sigma_position,
+                                  params_.sigma_velocity, params_.sigma_zmp);  // Eqs. 7.3-7.4
+    const Eigen::Vector4d y(com.x(), cop.x(), com.y(), cop.y());
+    const Eigen::Vector4d r(params_.sigma_com, params_.sigma_cop, params_.sigma_com,
+                            params_.sigma_cop);
+    // The ZMP rate input is unknown (u = 0); sigma_zmp covers it.
+    estimate_ = balance::update(balance::predict(filter, estimate_, Eigen::Vector2d::Zero()), y,
+                                balance::com_cop_measurement(),
+                                Eigen::Matrix4d(r.cwiseAbs2().asDiagonal()));
+    state_.valid = true;
+    state_.x = estimate_.x(0);
+    state_.xdot = estimate_.x(1);
+    state_.zmp_x = estimate_.x(2);
+    state_.y = estimate_.x(3);
+    state_.ydot = estimate_.x(4);
+    state_.zmp_y = estimate_.x(5);
+  }
+
+ private:
+  const FrameInfo& frame_;
+  const JointSensorData& joints_;
+  const FsrSensorData& fsr_;
+  const InertialSensorData& inertial_;
+  const ComStateEstimatorParameters& params_;
+  ComState& state_;
+  BalanceModel& model_out_;
+  std::unique_ptr<KinematicCom> com_;
+  balance::ComEstimate estimate_;
+};
+
+}  // namespace
+
+void register_com_state_estimator(ModuleRegistry& registry) {
+  registry.add<ComStateEstimator>("ComStateEstimator");
+}
+
+}  // namespace stride::behaviours

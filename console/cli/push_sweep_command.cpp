@@ -1,0 +1,270 @@
+// `stride push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step
+//  --directions d1,d2 [--duration s] [--settle s] [--observe s] [--estimate-delay s] [--seed N]
+//  [--csv f] [--json]`:
+// pushes the standing robot's torso once per (impulse, direction) in a freshly loaded scene,
+// predicts the outcome from the post-push CoM state with balance::classify (thesis Ch. 7) and
+// compares it with what the simulation does in the next seconds.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <numbers>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+#include <ode/ode.h>
+
+#include "behaviours/balance/modules/balance_modules.hpp"
+#include "behaviours/balance/modules/balance_representations.hpp"
+#include "behaviours/balance/strategy_classifier.hpp"
+#include "console/cli/arguments.hpp"
+#include "console/cli/subcommand.hpp"
+#include "console/session/sim_session.hpp"
+#include "robot/core/error.hpp"
+#include "simulator/scene/scene_parser.hpp"
+
+namespace stride::cli {
+
+namespace {
+
+struct SweepOptions {
+  std::string scene;
+  std::string strategy = "ankle";
+  std::vector<double> impulses, directions;
+  double duration = 0.05, settle = 1.5, observe = 3.0;
+  // The filter needs a few frames to follow the jump in velocity; the classes are invariant
+  // along saturated trajectories, so classifying a little after the push is consistent.
+  double estimate_delay = 0.03;
+  std::optional<std::uint64_t> seed;
+  double max_foot_motion = 0.02;  // more than this and the robot stepped or slid: not recovered
+};
+
+struct PushResult {
+  double impulse = 0, direction = 0;
+  balance::ComState estimated, truth;  // along the sagittal axis x, ground frame
+  balance::Classification predicted, predicted_truth;
+  bool expected_recovery = false;  // the chosen strategy's region contains the estimate
+  bool fell = false;
+  double foot_motion = 0;
+  bool recovered() const { return !fell && foot_motion <= 0.02; }
+  bool agree() const { return expected_recovery == recovered(); }
+};
+
+std::string module_of(const std::string& strategy) {
+  if (strategy == "ankle") return "AnkleBalance";
+  if (strategy == "hip") return "HipBalance";
+  if (strategy == "combined") return "CombinedBalance";
+  if (strategy == "lqr") return "LqrBalance";
+  throw Error("stride push-sweep: --strategy: expected ankle, hip, combined or lqr, got '" +
+              strategy + "'");
+}
+
+bool strategy_recovers(const std::string& strategy, const balance::Classification& c) {
+  if (strategy == "ankle") return c.ankle_recovers;
+  if (strategy == "hip") return c.hip_recovers;
+  return c.combined_recovers;  // combined and LQR use ankle and hip together
+}
+
+double parse_value(const std::string& flag, const std::string& s) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !std::isfinite(v))
+    throw Error("stride push-sweep: " + flag + ": expected a number, got '" + s + "'");
+  return v;
+}
+
+// "a:b:step" (inclusive) or "v1,v2,...".
+std::vector<double> parse_list(const std::string& flag, const std::string& text) {
+  std::vector<std::string> parts;
+  const char sep = text.find(':') != std::string::npos ? ':' : ',';
+  std::stringstream ss(text);
+  for (std::string p; std::getline(ss, p, sep);) parts.push_back(p);
+  std::vector<double> v;
+  if (sep == ',') {
+    for (const auto& p : parts) v.push_back(parse_value(flag, p));
+  } else {
+    if (parts.size() != 3)
+      throw Error("stride push-sweep: " + flag + ": expected first:last:step, got '" + text + "'");
+    const double a = parse_value(flag, parts[0]), b = parse_value(flag, parts[1]),
+                 s = parse_value(flag, parts[2]);
+    if (!(s > 0) || b < a)
+      throw Error("stride push-sweep: " + flag + ": expected first <= last and step > 0");
+    for (int i = 0; a + i * s <= b + 1e-9 * s; ++i) v.push_back(a + i * s);
+  }
+  if (v.empty()) throw Error("stride push-sweep: " + flag + ": expected at least one value");
+  return v;
+}
+
+// Mass-weighted CoM position and velocity of the simulated robot, world frame.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> true_com_state(const sim::RobotBody& body) {
+  double mass = 0;
+  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
+  for (int l = 0; l < body.link_count(); ++l) {
+    const double m = body.model().links[l].inertial.mass;
+    if (m <= 0 || !body.body(l)) continue;
+    const dReal* lv = dBodyGetLinearVel(body.body(l));
+    p += m * body.link_com(l);
+    v += m * Eigen::Vector3d(lv[0], lv[1], lv[2]);
+    mass += m;
+  }
+  return {p / mass, v / mass};
+}
+
+std::array<Eigen::Vector2d, 2> foot_positions(const sim::RobotBody& body) {
+  const auto& m = body.model();
+  return {body.link_pose(m.link_index("LFoot")).translation().head<2>(),
+          body.link_pose(m.link_index("RFoot")).translation().head<2>()};
+}
+
+PushResult run_push(const SweepOptions& o, double impulse, double direction) {
+  sim::SceneDescription scene = sim::parse_scene_file(o.scene);
+  if (o.seed) scene.physics.seed = *o.seed;
+  if (scene.robots.empty() || !scene.robots[0].has_controller)
+    throw Error("stride push-sweep: " + o.scene + ": robot 0 needs a <controller>");
+  auto& controller = scene.robots[0].controller;
+  controller.providers["JointRequest"] = module_of(o.strategy);
+  controller.parameters["ComStateEstimator.urdf"] = scene.robots[0].urdf;
+  const std::string robot = scene.robots[0].name;
+  console::SimSession session(std::move(scene));
+  auto& sim = session.simulation();
+  const Runtime& rt = *session.runtime(0);
+  const sim::RobotBody& body = sim.robot(0).body();
+
+  sim.run_for(o.settle);
+  const auto feet_before = foot_positions(body);
+  const double a = direction * std::numbers::pi / 180;
+  const Eigen::Vector3d force = impulse / o.duration * Eigen::Vector3d(std::cos(a), std::sin(a), 0);
+  sim.push(robot, "torso", force, Eigen::Vector3d::Zero(), o.duration);
+  sim.run_for(o.duration + o.estimate_delay);
+
+  PushResult r;
+  r.impulse = impulse;
+  r.direction = direction;
+  const ComState& com = rt.representation<ComState>();
+  r.estimated = {com.x, com.xdot};
+  const auto [p, v] = true_com_state(body);
+  const auto feet = foot_positions(body);
+  r.truth = {p.x() - 0.5 * (feet[0].x() + feet[1].x()), v.x()};  // ground frame: ankles' midpoint
+  const BalanceModel& model = rt.representation<BalanceModel>();
+  const behaviours::HipBalanceParameters hip;  // the torques the models assume
+  const balance::BalanceParams params = balance_params(model, hip.tau_forward, hip.tau_backward);
+  r.predicted = balance::classify(params, r.estimated);
+  r.predicted_truth = balance::classify(params, r.truth);
+  r.expected_recovery = strategy_recovers(o.strategy, r.predicted);
+
+  for (double t = 0; t < o.observe - 1e-9; t += 0.1) {
+    sim.run_for(0.1);
+    r.fell = r.fell || sim.robot(0).fallen();
+  }
+  const auto feet_after = foot_positions(body);
+  for (int i = 0; i < 2; ++i)
+    r.foot_motion = std::max(r.foot_motion, (feet_after[i] - feet_before[i]).norm());
+  return r;
+}
+
+std::string observed(const PushResult& r) {
+  return r.recovered() ? "recovered" : r.fell ? "fell" : "stepped";
+}
+
+void print_table(std::ostream& out, const SweepOptions& o, const std::vector<PushResult>& rs) {
+  out << "push sweep: strategy " << o.strategy << ", push " << o.duration << " s on the torso\n";
+  out << std::setw(8) << "impulse" << std::setw(5) << "dir" << std::setw(9) << "x_est"
+      << std::setw(9) << "v_est" << std::setw(9) << "x_true" << std::setw(9) << "v_true"
+      << std::setw(10) << "predicted" << std::setw(10) << "expected" << std::setw(11) << "observed"
+      << std::setw(7) << "agree" << "\n";
+  int agree = 0;
+  for (const auto& r : rs) {
+    agree += r.agree();
+    out << std::fixed << std::setprecision(2) << std::setw(8) << r.impulse << std::setw(5)
+        << std::setprecision(0) << r.direction << std::setprecision(4) << std::setw(9)
+        << r.estimated.x << std::setw(9) << r.estimated.v << std::setw(9) << r.truth.x
+        << std::setw(9) << r.truth.v << std::setw(10) << balance::to_string(r.predicted.strategy)
+        << std::setw(10) << (r.expected_recovery ? "recover" : "fall") << std::setw(11)
+        << observed(r) << std::setw(7) << (r.agree() ? "yes" : "no") << "\n";
+  }
+  out << std::defaultfloat << "agreement: " << agree << "/" << rs.size() << " = "
+      << std::setprecision(3) << 100.0 * agree / rs.size() << " %\n";
+}
+
+void write_csv(std::ostream& f, const std::vector<PushResult>& rs) {
+  f << "impulse,direction,x_est,v_est,x_true,v_true,predicted,predicted_true,expected,observed,"
+       "foot_motion,agree\n";
+  for (const auto& r : rs)
+    f << r.impulse << ',' << r.direction << ',' << r.estimated.x << ',' << r.estimated.v << ','
+      << r.truth.x << ',' << r.truth.v << ',' << balance::to_string(r.predicted.strategy) << ','
+      << balance::to_string(r.predicted_truth.strategy) << ','
+      << (r.expected_recovery ? "recover" : "fall") << ',' << observed(r) << ',' << r.foot_motion
+      << ',' << r.agree() << '\n';
+}
+
+void write_json(std::ostream& out, const SweepOptions& o, const std::vector<PushResult>& rs) {
+  int agree = 0;
+  out << "{\"strategy\": \"" << o.strategy << "\", \"pushes\": [";
+  for (std::size_t i = 0; i < rs.size(); ++i) {
+    const auto& r = rs[i];
+    agree += r.agree();
+    out << (i ? ", " : "") << "{\"impulse\": " << r.impulse << ", \"direction\": " << r.direction
+        << ", \"x_est\": " << r.estimated.x << ", \"v_est\": " << r.estimated.v
+        << ", \"x_true\": " << r.truth.x << ", \"v_true\": " << r.truth.v << ", \"predicted\": \""
+        << balance::to_string(r.predicted.strategy) << "\", \"expected\": \""
+        << (r.expected_recovery ? "recover" : "fall") << "\", \"observed\": \"" << observed(r)
+        << "\", \"foot_motion\": " << r.foot_motion
+        << ", \"agree\": " << (r.agree() ? "true" : "false") << "}";
+  }
+  out << "], \"agreement\": " << static_cast<double>(agree) / rs.size() << "}\n";
+}
+
+}  // namespace
+
+int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
+  try {
+    ArgumentReader a(args, "push-sweep");
+    SweepOptions o;
+    o.scene = a.text("--scene");
+    o.strategy = a.text_or("--strategy", "ankle");
+    module_of(o.strategy);
+    o.impulses = parse_list("--impulses", a.text("--impulses"));
+    o.directions = parse_list("--directions", a.text_or("--directions", "0,180"));
+    o.duration = a.number_or("--duration", o.duration);
+    o.settle = a.number_or("--settle", o.settle);
+    o.observe = a.number_or("--observe", o.observe);
+    o.estimate_delay = a.number_or("--estimate-delay", o.estimate_delay);
+    if (a.has("--seed")) o.seed = a.unsigned_integer("--seed");
+    const std::string csv = a.text_or("--csv", "");
+    const bool json = a.flag("--json");
+    a.finish();
+    if (!(o.duration > 0)) throw Error("stride push-sweep: --duration: expected a time > 0");
+    if (!(o.settle >= 0) || !(o.observe > 0) || !(o.estimate_delay >= 0))
+      throw Error(
+          "stride push-sweep: --settle, --observe, --estimate-delay: expected times >= 0, > 0, "
+          ">= 0");
+    for (double i : o.impulses)
+      if (!(i >= 0)) throw Error("stride push-sweep: --impulses: expected values >= 0 N*s");
+
+    std::vector<PushResult> results;
+    for (double impulse : o.impulses)
+      for (double direction : o.directions) results.push_back(run_push(o, impulse, direction));
+    if (json)
+      write_json(out, o, results);
+    else
+      print_table(out, o, results);
+    if (!csv.empty()) {
+      std::ofstream f(csv);
+      if (!f) throw Error("stride push-sweep: --csv: cannot write '" + csv + "'");
+      write_csv(f, results);
+    }
+    return 0;
+  } catch (const std::exception& e) {
+    err << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace stride::cli
