@@ -1,5 +1,9 @@
 #include "robot/runtime/nao_io_modules.hpp"
 
+#include <cmath>
+
+#include "robot/nao/joint_limits.hpp"
+
 #include <algorithm>
 
 #include "robot/model/kinematics/nao_fk.hpp"
@@ -80,11 +84,15 @@ class ActuatorConversion final : public Module {
 
   void update() override {
     out_.mode = request_.mode;
-    out_.position = request_.position;
     out_.torque = request_.torque;
-    // Stiffness outside 0..1 is meaningless to the servos; clamp rather than pass it on.
-    for (int i = 0; i < hal::kNumJoints; ++i)
-      out_.stiffness[i] = std::clamp(request_.stiffness[i], 0.0, 1.0);
+    // Safety: never send a servo past its joint limits or outside stiffness 0..1; a NaN holds 0.
+    for (int i = 0; i < hal::kNumJoints; ++i) {
+      const auto& lim = nao::kJointLimits[i];
+      const double q = request_.position[i];
+      out_.position[i] = std::isfinite(q) ? std::clamp(q, lim.lower, lim.upper) : 0.0;
+      const double s = request_.stiffness[i];
+      out_.stiffness[i] = std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0;
+    }
   }
 
  private:
