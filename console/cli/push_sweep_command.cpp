@@ -1,6 +1,6 @@
 // `stride push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step
 //  --directions d1,d2 [--duration s] [--settle s] [--observe s] [--estimate-delay s] [--seed N]
-//  [--csv f] [--json]`:
+//  [--set "Module.field=value ..."] [--csv f] [--json]`:
 // pushes the standing robot's torso once per (impulse, direction) in a freshly loaded scene,
 // predicts the outcome from the post-push CoM state with balance::classify (thesis Ch. 7) and
 // compares it with what the simulation does in the next seconds.
@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <ostream>
@@ -38,8 +39,23 @@ struct SweepOptions {
   // along saturated trajectories, so classifying a little after the push is consistent.
   double estimate_delay = 0.03;
   std::optional<std::uint64_t> seed;
-  double max_foot_motion = 0.02;  // more than this and the robot stepped or slid: not recovered
+  std::map<std::string, std::string> parameters;  // --set "Module.field=value ..."
 };
+
+std::map<std::string, std::string> parse_settings(const std::string& text) {
+  std::map<std::string, std::string> out;
+  std::istringstream ss(text);
+  for (std::string item; ss >> item;) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || item.find('.') > eq)
+      throw Error("stride push-sweep: --set: expected Module.field=value, got '" + item + "'");
+    out[item.substr(0, eq)] = item.substr(eq + 1);
+  }
+  return out;
+}
+
+// Feet moving more than this means the robot stepped or slid: not a recovery in place.
+constexpr double kMaxFootMotion = 0.02;
 
 struct PushResult {
   double impulse = 0, direction = 0;
@@ -48,7 +64,8 @@ struct PushResult {
   bool expected_recovery = false;  // the chosen strategy's region contains the estimate
   bool fell = false;
   double foot_motion = 0;
-  bool recovered() const { return !fell && foot_motion <= 0.02; }
+  bool truth_expects_recovery = false;  // the same from the simulator's CoM state
+  bool recovered() const { return !fell && foot_motion <= kMaxFootMotion; }
   bool agree() const { return expected_recovery == recovered(); }
 };
 
@@ -131,6 +148,7 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
   auto& controller = scene.robots[0].controller;
   controller.providers["JointRequest"] = module_of(o.strategy);
   controller.parameters["ComStateEstimator.urdf"] = scene.robots[0].urdf;
+  for (const auto& [key, value] : o.parameters) controller.parameters[key] = value;
   const std::string robot = scene.robots[0].name;
   console::SimSession session(std::move(scene));
   auto& sim = session.simulation();
@@ -158,6 +176,7 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
   r.predicted = balance::classify(params, r.estimated);
   r.predicted_truth = balance::classify(params, r.truth);
   r.expected_recovery = strategy_recovers(o.strategy, r.predicted);
+  r.truth_expects_recovery = strategy_recovers(o.strategy, r.predicted_truth);
 
   for (double t = 0; t < o.observe - 1e-9; t += 0.1) {
     sim.run_for(0.1);
@@ -177,20 +196,25 @@ void print_table(std::ostream& out, const SweepOptions& o, const std::vector<Pus
   out << "push sweep: strategy " << o.strategy << ", push " << o.duration << " s on the torso\n";
   out << std::setw(8) << "impulse" << std::setw(5) << "dir" << std::setw(9) << "x_est"
       << std::setw(9) << "v_est" << std::setw(9) << "x_true" << std::setw(9) << "v_true"
-      << std::setw(10) << "predicted" << std::setw(10) << "expected" << std::setw(11) << "observed"
-      << std::setw(7) << "agree" << "\n";
-  int agree = 0;
+      << std::setw(10) << "predicted" << std::setw(10) << "pred_true" << std::setw(10) << "expected"
+      << std::setw(11) << "observed" << std::setw(7) << "agree"
+      << "\n";
+  int agree = 0, agree_truth = 0;
   for (const auto& r : rs) {
     agree += r.agree();
+    agree_truth += r.truth_expects_recovery == r.recovered();
     out << std::fixed << std::setprecision(2) << std::setw(8) << r.impulse << std::setw(5)
         << std::setprecision(0) << r.direction << std::setprecision(4) << std::setw(9)
         << r.estimated.x << std::setw(9) << r.estimated.v << std::setw(9) << r.truth.x
         << std::setw(9) << r.truth.v << std::setw(10) << balance::to_string(r.predicted.strategy)
-        << std::setw(10) << (r.expected_recovery ? "recover" : "fall") << std::setw(11)
-        << observed(r) << std::setw(7) << (r.agree() ? "yes" : "no") << "\n";
+        << std::setw(10) << balance::to_string(r.predicted_truth.strategy) << std::setw(10)
+        << (r.expected_recovery ? "recover" : "fall") << std::setw(11) << observed(r)
+        << std::setw(7) << (r.agree() ? "yes" : "no") << "\n";
   }
   out << std::defaultfloat << "agreement: " << agree << "/" << rs.size() << " = "
       << std::setprecision(3) << 100.0 * agree / rs.size() << " %\n";
+  out << "agreement from the simulator's CoM state: " << agree_truth << "/" << rs.size() << " = "
+      << 100.0 * agree_truth / rs.size() << " %\n";
 }
 
 void write_csv(std::ostream& f, const std::vector<PushResult>& rs) {
@@ -236,6 +260,7 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
     o.settle = a.number_or("--settle", o.settle);
     o.observe = a.number_or("--observe", o.observe);
     o.estimate_delay = a.number_or("--estimate-delay", o.estimate_delay);
+    o.parameters = parse_settings(a.text_or("--set", ""));
     if (a.has("--seed")) o.seed = a.unsigned_integer("--seed");
     const std::string csv = a.text_or("--csv", "");
     const bool json = a.flag("--json");

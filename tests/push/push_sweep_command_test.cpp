@@ -36,30 +36,35 @@ TEST(PushSweepCommand, PrintsOneRowPerPushAndTheAgreement) {
                         "--directions", "0", "--settle", "1.0", "--observe", "2.0"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto lines = lines_of(r.out);
-  ASSERT_EQ(lines.size(), 6u) << r.out;  // title, header, 3 rows, agreement
+  ASSERT_EQ(lines.size(), 7u) << r.out;  // title, header, 3 rows, two agreement lines
   EXPECT_NE(lines[1].find("predicted"), std::string::npos);
   int rows_agreeing = 0;
   for (int i = 2; i < 5; ++i) {
     std::istringstream row(lines[i]);
     double impulse, dir, x, v, xt, vt;
-    std::string predicted, expected, observed, agree;
-    ASSERT_TRUE(row >> impulse >> dir >> x >> v >> xt >> vt >> predicted >> expected >> observed >>
-                agree)
+    std::string predicted, predicted_true, expected, observed, agree;
+    ASSERT_TRUE(row >> impulse >> dir >> x >> v >> xt >> vt >> predicted >> predicted_true >>
+                expected >> observed >> agree)
         << lines[i];
-    EXPECT_TRUE(agree == "yes" || agree == "no");
+    // agree = the strategy's predicted outcome is what happened.
+    EXPECT_EQ(agree == "yes", (expected == "recover") == (observed == "recovered")) << lines[i];
     rows_agreeing += agree == "yes";
     EXPECT_EQ(dir, 0);
     EXPECT_GT(vt, 0.1 * impulse) << lines[i];  // the forward push moved the CoM forward
     EXPECT_GT(v, 0) << lines[i];
     if (impulse > 3) {  // far beyond every region: predicted none and observed as a fall
       EXPECT_EQ(predicted, "none");
+      EXPECT_EQ(predicted_true, "none");
       EXPECT_EQ(observed, "fell");
-    } else {
+    } else {  // small pushes: inside the ankle region, and absorbed
+      EXPECT_EQ(predicted, "ankle");
+      EXPECT_EQ(expected, "recover");
       EXPECT_EQ(observed, "recovered");
     }
   }
   EXPECT_NE(lines[5].find("agreement: " + std::to_string(rows_agreeing) + "/3"), std::string::npos)
       << lines[5];
+  EXPECT_EQ(lines[6].rfind("agreement from the simulator's CoM state: ", 0), 0u) << lines[6];
 }
 
 TEST(PushSweepCommand, RejectsBadArgumentsInOneLine) {

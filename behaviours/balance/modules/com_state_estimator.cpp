@@ -1,5 +1,6 @@
 #include "behaviours/balance/modules/com_state_estimator.hpp"
 
+#include <cmath>
 #include <memory>
 #include <span>
 
@@ -152,13 +153,26 @@ class ComStateEstimator final : public Module {
     const auto filter =
         balance::com_filter_model(com.z(), params_.g, frame_.period, params_.sigma_position,
                                   params_.sigma_velocity, params_.sigma_zmp);  // Eqs. 7.3-7.4
-    const Eigen::Vector4d y(com.x(), cop.x(), com.y(), cop.y());
-    const Eigen::Vector4d r(params_.sigma_com, params_.sigma_cop, params_.sigma_com,
-                            params_.sigma_cop);
-    // The ZMP rate input is unknown (u = 0); sigma_zmp covers it.
-    estimate_ = balance::update(balance::predict(filter, estimate_, Eigen::Vector2d::Zero()), y,
-                                balance::com_cop_measurement(),
-                                Eigen::Matrix4d(r.cwiseAbs2().asDiagonal()));
+    const auto predicted = balance::predict(filter, estimate_, Eigen::Vector2d::Zero());
+    if (params_.sigma_force > 0) {
+      // The printed C: the accelerometer's levelled horizontal specific force times m is the
+      // total horizontal force f = m omega^2 (x - x_zmp); it sees a push as it happens.
+      const Eigen::Vector3d acc = torso_to_ground.linear() * inertial_.acc;
+      const double mass = model_out_.mass;
+      const double omega = std::sqrt(params_.g / com.z());
+      Eigen::Matrix<double, 6, 1> y, r;
+      y << com.x(), cop.x(), mass * acc.x(), com.y(), cop.y(), mass * acc.y();
+      r << params_.sigma_com, params_.sigma_cop, params_.sigma_force, params_.sigma_com,
+          params_.sigma_cop, params_.sigma_force;
+      estimate_ = balance::update(predicted, y, balance::com_cop_force_measurement(mass, omega),
+                                  Eigen::Matrix<double, 6, 6>(r.cwiseAbs2().asDiagonal()));
+    } else {
+      const Eigen::Vector4d y(com.x(), cop.x(), com.y(), cop.y());
+      const Eigen::Vector4d r(params_.sigma_com, params_.sigma_cop, params_.sigma_com,
+                              params_.sigma_cop);
+      estimate_ = balance::update(predicted, y, balance::com_cop_measurement(),
+                                  Eigen::Matrix4d(r.cwiseAbs2().asDiagonal()));
+    }
     state_.valid = true;
     state_.x = estimate_.x(0);
     state_.xdot = estimate_.x(1);

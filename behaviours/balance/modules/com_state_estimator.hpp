@@ -23,6 +23,7 @@ struct ComStateEstimatorParameters {
   double sigma_zmp = 2e-2;  // the ZMP input (Eq. 7.4) is unknown: it is absorbed here
   double sigma_com = 1e-3;  // measurement noise std-devs (R)
   double sigma_cop = 5e-3;
+  double sigma_force = 0;  // accelerometer force measurement (N); 0 leaves it out
   double g = 9.81;
   bool use_imu_tilt = true;  // level the ground frame with the IMU instead of the left sole
 
@@ -35,6 +36,7 @@ struct ComStateEstimatorParameters {
         field("sigma_zmp", &P::sigma_zmp, "m", Range{0, 1}),
         field("sigma_com", &P::sigma_com, "m", Range{1e-9, 1}),
         field("sigma_cop", &P::sigma_cop, "m", Range{1e-9, 1}),
+        field("sigma_force", &P::sigma_force, "N", Range{0, 1e3}),
         field("g", &P::g, "m/s^2", Range{0.1, 100}), field("use_imu_tilt", &P::use_imu_tilt));
   }
 };
