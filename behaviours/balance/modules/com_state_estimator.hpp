@@ -19,7 +19,7 @@ namespace stride::behaviours {
 struct ComStateEstimatorParameters {
   std::string urdf = "scenes/robots/nao/nao.urdf";  // mass model; relative to the working dir
   double sigma_position = 1e-4;                     // process noise std-devs per step (Q)
-  double sigma_velocity = 2e-2;
+  double sigma_velocity = 5e-2;
   double sigma_zmp = 2e-2;  // the ZMP input (Eq. 7.4) is unknown: it is absorbed here
   double sigma_com = 1e-3;  // measurement noise std-devs (R)
   double sigma_cop = 5e-3;
