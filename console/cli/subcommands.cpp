@@ -10,6 +10,7 @@ int balance_main(Args args, std::ostream& out, std::ostream& err);
 int kin_main(Args args, std::ostream& out, std::ostream& err);
 int dyn_main(Args args, std::ostream& out, std::ostream& err);
 int pattern_main(Args args, std::ostream& out, std::ostream& err);
+int experiment_main(Args args, std::ostream& out, std::ostream& err);
 int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
@@ -24,6 +25,7 @@ const std::vector<Subcommand>& subcommands() {
        "pattern [--preset P] [--set name=value ...] [--conventional] --csv out.csv [--plots dir]: "
        "walking pattern (Ch. 3) offline",
        pattern_main},
+      {"experiment", "experiment posture|knee-energy|kalman|fastest|arm-swing [--seeds N] [--out dir] [--scenes dir] [--no-plots]: Ch. 4 experiments", experiment_main},
   };
   return table;
 }

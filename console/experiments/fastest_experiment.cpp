@@ -1,0 +1,84 @@
+#include "console/experiments/fastest_experiment.hpp"
+
+#include <ostream>
+#include <sstream>
+
+#include "console/experiments/walk_recording.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::experiments {
+
+const std::vector<FastWalkSetting>& fast_walk_settings() {
+  // Lower waist and shorter stride first (Sec. 4.3.4.2: faster walks need a lower waist).
+  static const std::vector<FastWalkSetting> settings = {
+      {0.50, 0.313, 0.315, 0.026, 0.40, 0.05},
+      {0.50, 0.305, 0.307, 0.026, 0.40, 0.05},
+      {0.44, 0.305, 0.307, 0.026, 0.40, 0.05},
+      {0.40, 0.300, 0.302, 0.024, 0.40, 0.05},
+  };
+  return settings;
+}
+
+std::string fast_walk_parameters(const FastWalkSetting& s, double v) {
+  std::ostringstream p;
+  p << "T_stride=" << s.T_stride << " z_min=" << s.z_min << " z_max=" << s.z_max
+    << " H_foot=" << s.H_foot << " A_l=0.0005 V_min=" << v - 0.005 << " V_max=" << v + 0.005;
+  return p.str();
+}
+
+int run_fastest_experiment(const ExperimentOptions& o, std::ostream& out) {
+  const bool files = prepare_out_dir(o);
+  plot::Table tried{{"uneven", "target", "setting", "T_stride", "z_max", "speed", "distance",
+                     "fell", "pitch_max", "roll_max"}};
+  std::vector<std::vector<std::string>> best_rows;
+  for (int uneven = 0; uneven < 2; ++uneven) {
+    const std::string scene = scene_path(o, uneven ? "fastest_uneven" : "fastest_flat");
+    std::vector<std::string> best;
+    for (double v = 0.24; v < 0.60; v += 0.02) {
+      bool stable = false;
+      for (std::size_t i = 0; i < fast_walk_settings().size() && !stable; ++i) {
+        const FastWalkSetting& s = fast_walk_settings()[i];
+        std::ostringstream gains;
+        gains << "kp_pitch=" << s.kp << " kd_pitch=" << s.kd << " kp_roll=" << s.kp
+              << " kd_roll=" << s.kd;
+        WalkSetup setup{scene, 1};
+        setup.parameters = {{"PatternWalk", fast_walk_parameters(s, v)},
+                            {"HipStrategy", gains.str()}};
+        WalkSummary w;
+        try {
+          w = summarize(record_walk(setup));
+        } catch (const Error& e) {  // e.g. the step no longer within the leg's reach
+          out << "  v " << fixed(v, 2) << " setting " << i + 1 << ": " << e.what() << "\n";
+          continue;
+        }
+        tried.add_row({double(uneven), v, double(i + 1), s.T_stride, s.z_max, w.speed, w.distance,
+                       w.fell ? 1.0 : 0.0, std::max(-w.pitch_min, w.pitch_max),
+                       std::max(-w.roll_min, w.roll_max)});
+        stable = !w.fell && w.speed > 0.5 * v;
+        out << "  " << (uneven ? "uneven" : "flat") << " target " << fixed(v, 2) << " setting "
+            << i + 1 << ": " << (w.fell ? "fell" : "up") << ", " << fixed(w.speed, 4) << " m/s\n";
+        if (stable)
+          best = {uneven ? "uneven" : "flat",
+                  fixed(v, 2),
+                  fixed(w.speed, 4),
+                  fixed(w.distance, 3),
+                  fixed(w.step_length, 4),
+                  fixed(s.T_stride, 2),
+                  fixed(s.z_min, 3) + "/" + fixed(s.z_max, 3),
+                  fixed(s.H_foot, 3),
+                  fixed(s.kp, 2) + "/" + fixed(s.kd, 2)};
+      }
+      if (!stable) break;
+    }
+    if (!best.empty()) best_rows.push_back(best);
+  }
+  out << "Fastest stable walk (hip strategy, A_l = 0.5 mm); thesis: 0.24 m/s on the real NAO\n";
+  print_table(out,
+              {"floor", "target", "v [m/s]", "dist [m]", "step [m]", "T_stride", "z_min/z_max",
+               "H_foot", "Kp/Kd"},
+              best_rows);
+  if (files) plot::write_csv(o.out_dir + "/fastest_tried.csv", tried);
+  return 0;
+}
+
+}  // namespace stride::experiments

@@ -1,0 +1,116 @@
+#include "console/experiments/kalman_experiment.hpp"
+
+#include <ostream>
+#include <string>
+
+#include "console/experiments/kalman_study.hpp"
+#include "console/experiments/walk_recording.hpp"
+
+namespace stride::experiments {
+namespace {
+
+struct Setting {
+  std::string figure;
+  Eigen::Vector4d q, r;
+};
+
+std::string diag(const Eigen::Vector4d& v) {
+  std::string s;
+  for (int i = 0; i < 4; ++i) {
+    char b[16];
+    std::snprintf(b, sizeof b, "%.0e", v[i]);
+    s += (i ? " " : "") + std::string(b);
+  }
+  return "[" + s + "]";
+}
+
+std::vector<Eigen::Vector2d> angles(const std::vector<Eigen::Vector4d>& x) {
+  std::vector<Eigen::Vector2d> a;
+  for (const auto& v : x) a.push_back(v.head<2>());
+  return a;
+}
+
+}  // namespace
+
+int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
+  const bool files = prepare_out_dir(o);
+  // Table 4.2's walk (the thesis' Q/R tuning runs), hip strategy of Fig. 4.7, uneven floor.
+  WalkSetup setup{scene_path(o, "hip_medium"), o.seeds > 0 ? std::uint64_t(o.seeds) : 1};
+  setup.parameters = {{"PatternWalk", "H_foot=0.032 z_min=0.321 z_max=0.323 A_l=0.005"}};
+  const WalkRecording rec = record_walk(setup);
+  const KalmanSeries series = kalman_series(rec);
+  const std::size_t first = static_cast<std::size_t>(1.0 / rec.period);  // after L's transient
+
+  std::vector<Eigen::Vector2d> online, imu;
+  std::vector<double> gyro_pitch, true_pitch_rate, gyro_roll, true_roll_rate;
+  for (const auto& row : rec.trace.rows) {
+    online.push_back({row[col(Trace::est_pitch)], row[col(Trace::est_roll)]});
+    imu.push_back({row[col(Trace::imu_pitch)], row[col(Trace::imu_roll)]});
+    gyro_pitch.push_back(row[col(Trace::gyro_pitch)]);
+    gyro_roll.push_back(row[col(Trace::gyro_roll)]);
+    true_pitch_rate.push_back(row[col(Trace::true_pitch_rate)]);
+    true_roll_rate.push_back(row[col(Trace::true_roll_rate)]);
+  }
+  out << "Torso state during the Table 4.2 walk (hip strategy, uneven floor), against ground "
+         "truth; "
+      << rec.trace.rows.size() << " frames\n";
+  out << "gyro vs d/dt(true angle) correlation: pitch "
+      << fixed(correlation(gyro_pitch, true_pitch_rate), 3) << ", roll "
+      << fixed(correlation(gyro_roll, true_roll_rate), 3)
+      << " (+1: the gyro sign matches the filter's model, Eq. 4.6)\n";
+  std::vector<std::vector<std::string>> rows;
+  auto add = [&](const std::string& what, const std::string& q, const std::string& r,
+                 const EstimateScore& s) {
+    rows.push_back({what, q, r, fixed(s.rms_pitch * 1e3, 2), fixed(s.rms_roll * 1e3, 2),
+                    fixed(s.lag_pitch * 1e3, 0), fixed(s.lag_roll * 1e3, 0)});
+  };
+  add("IMU angles (raw)", "-", "-", score_estimate(imu, series.truth, rec.period, first));
+  add("TorsoStateEstimator online", "module", "module",
+      score_estimate(online, series.truth, rec.period, first));
+
+  const Eigen::Vector4d q_thesis(1e-1, 1e-1, 1e-5, 1e-5), r_thesis(1e-4, 1e-4, 1e-3, 1e-3);
+  std::vector<Setting> settings;
+  for (double qa : {1e-5, 1e-3, 1e-1, 1e1})  // Fig. 4.1: R fixed
+    settings.push_back({"Fig. 4.1", {qa, qa, 1e-5, 1e-5}, Eigen::Vector4d::Constant(1e-3)});
+  for (double ra : {1e-1, 1e-2, 1e-3, 1e-4})  // Fig. 4.2: Q fixed
+    settings.push_back({"Fig. 4.2", q_thesis, {ra, ra, 1e-3, 1e-3}});
+  settings.push_back({"chosen (Sec. 4.3.2)", q_thesis, r_thesis});
+
+  plot::Table fig{{"t", "true_pitch", "imu_pitch"}};
+  std::vector<std::vector<Eigen::Vector4d>> estimates;
+  for (const Setting& s : settings) {
+    estimates.push_back(filter_series(series, s.q, s.r, 1000));
+    add(s.figure, diag(s.q), diag(s.r),
+        score_estimate(angles(estimates.back()), series.truth, rec.period, first));
+  }
+  out << "Q/R rerun offline on the same IMU data (P0 = 1000 I); errors after the first 1 s\n";
+  print_table(out,
+              {"estimate", "Q diag", "R diag", "RMS pitch [mrad]", "RMS roll [mrad]",
+               "lag pitch [ms]", "lag roll [ms]"},
+              rows);
+  if (files) {
+    for (std::size_t i = 0; i < settings.size(); ++i)
+      fig.columns.push_back("pitch_" + std::to_string(i + 1));
+    for (std::size_t k = 0; k < series.y.size(); ++k) {
+      std::vector<double> row{rec.trace.rows[k][col(Trace::t)], series.truth[k][0], series.y[k][0]};
+      for (const auto& e : estimates) row.push_back(e[k][0]);
+      fig.add_row(std::move(row));
+    }
+    auto series_of = [&](std::size_t from, std::size_t to) {
+      std::vector<plot::Series> s{{"true_pitch", "ground truth", ""},
+                                  {"imu_pitch", "IMU angle", ""}};
+      for (std::size_t i = from; i < to; ++i)
+        s.push_back({"pitch_" + std::to_string(i + 1),
+                     "Q " + diag(settings[i].q) + " R " + diag(settings[i].r), ""});
+      return s;
+    };
+    write_plot(o, fig, "kalman_fig4.1_q", "Torso pitch estimates, R fixed (Fig. 4.1)", "t",
+               series_of(0, 4), "t [s]", "pitch [rad]");
+    write_plot(o, fig, "kalman_fig4.2_r", "Torso pitch estimates, Q fixed (Fig. 4.2)", "t",
+               series_of(4, 8), "t [s]", "pitch [rad]");
+    plot::write_csv(o.out_dir + "/kalman_walk_trace.csv", rec.trace);
+  }
+  return 0;
+}
+
+}  // namespace stride::experiments

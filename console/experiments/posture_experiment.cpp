@@ -1,0 +1,127 @@
+#include "console/experiments/posture_experiment.hpp"
+
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+namespace stride::experiments {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Columns `names` of the walking part of the trace (pattern_t >= -0.5 s), as a new table.
+plot::Table select(const WalkRecording& r, const std::vector<Trace>& names) {
+  plot::Table t;
+  for (Trace c : names) t.columns.push_back(trace_columns()[col(c)]);
+  for (const auto& row : r.trace.rows) {
+    if (row[col(Trace::pattern_t)] < -0.5) continue;
+    std::vector<double> out;
+    for (Trace c : names) out.push_back(row[col(c)]);
+    t.add_row(std::move(out));
+  }
+  return t;
+}
+
+}  // namespace
+
+const std::vector<PostureCase>& posture_cases() {
+  // Sec. 4.3.4.2: distance in 15 s, average speed and step length as printed.
+  static const std::vector<PostureCase> cases = {
+      {"none_slow", "-", kNaN, kNaN, kNaN},
+      {"none_medium", "-", kNaN, kNaN, kNaN},
+      {"none_fast", "-", kNaN, kNaN, kNaN},
+      {"hip_slow", "Fig. 4.6", 1.2912, 0.0861, 0.0212},
+      {"hip_medium", "Fig. 4.7", 2.8794, 0.1920, 0.0472},
+      {"hip_fast", "Fig. 4.8", 3.5469, 0.2365, 0.0581},
+      {"ankle_slow", "Fig. 4.10", 1.1654, 0.0777, 0.0191},
+      {"ankle_medium", "Fig. 4.11", 2.6119, 0.1741, 0.0428},
+      {"ankle_fast", "Fig. 4.12", 3.5035, 0.2336, 0.0574},
+  };
+  return cases;
+}
+
+void write_walk_figures(const ExperimentOptions& o, const WalkRecording& r, const std::string& stem,
+                        const std::string& title, bool ankle_joints) {
+  using T = Trace;
+  const std::string joint = ankle_joints ? "ankle" : "hip";
+  const std::vector<T> angles = ankle_joints ? std::vector<T>{T::t,
+                                                              T::ankle_pitch_ref_l,
+                                                              T::ankle_pitch_mod_l,
+                                                              T::ankle_roll_ref_l,
+                                                              T::ankle_roll_mod_l,
+                                                              T::ankle_pitch_ref_r,
+                                                              T::ankle_pitch_mod_r,
+                                                              T::ankle_roll_ref_r,
+                                                              T::ankle_roll_mod_r}
+                                             : std::vector<T>{T::t,
+                                                              T::hip_pitch_ref_l,
+                                                              T::hip_pitch_mod_l,
+                                                              T::hip_roll_ref_l,
+                                                              T::hip_roll_mod_l,
+                                                              T::hip_pitch_ref_r,
+                                                              T::hip_pitch_mod_r,
+                                                              T::hip_roll_ref_r,
+                                                              T::hip_roll_mod_r};
+  std::vector<plot::Series> angle_series;
+  for (std::size_t i = 1; i < angles.size(); ++i)
+    angle_series.push_back({trace_columns()[col(angles[i])], "", ""});
+  write_plot(o, select(r, angles), stem + "_a_" + joint + "_angles",
+             title + ": (a) reference and modified " + joint + " angles", "t", angle_series,
+             "t [s]", "angle [rad]");
+  write_plot(o, select(r, {T::t, T::true_pitch, T::true_roll, T::est_pitch, T::est_roll}),
+             stem + "_b_torso", title + ": (b) torso inclination", "t",
+             {{"true_pitch", "pitch (ground truth)", ""},
+              {"true_roll", "roll (ground truth)", ""},
+              {"est_pitch", "pitch (Kalman)", ""},
+              {"est_roll", "roll (Kalman)", ""}},
+             "t [s]", "[rad]");
+  write_plot(o, select(r, {T::t, T::waist_v_ref, T::waist_v}), stem + "_c_waist_velocity",
+             title + ": (c) waist velocity", "t",
+             {{"waist_v_ref", "reference", ""}, {"waist_v", "actual (torso, ground truth)", ""}},
+             "t [s]", "v_x [m/s]");
+  write_plot(
+      o, select(r, {T::t, T::cop_x, T::cop_y, T::zmp_ref_x, T::zmp_ref_y}), stem + "_d_zmp",
+      title + ": (d) ZMP (CoP from the FSRs) in the world frame", "cop_x",
+      {{"cop_y", "measured (FSR CoP)", "cop_x"}, {"zmp_ref_y", "planned (Eq. 3.16)", "zmp_ref_x"}},
+      "x [m]", "y [m]", "lines");
+}
+
+int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
+  const int seeds = o.seeds > 0 ? o.seeds : 1;
+  const bool files = prepare_out_dir(o);
+  plot::Table summary{{"case", "seed", "steps", "distance", "fk_distance", "speed", "step_length",
+                       "pitch_min", "pitch_max", "roll_min", "roll_max", "fell"}};
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t k = 0; k < posture_cases().size(); ++k) {
+    const PostureCase& c = posture_cases()[k];
+    for (int seed = 1; seed <= seeds; ++seed) {
+      WalkSetup setup{scene_path(o, c.scene), static_cast<std::uint64_t>(seed)};
+      const WalkRecording r = record_walk(setup);
+      const WalkSummary s = summarize(r);
+      summary.add_row({double(k), double(seed), double(s.steps), s.distance, s.fk_distance, s.speed,
+                       s.step_length, s.pitch_min, s.pitch_max, s.roll_min, s.roll_max,
+                       s.fell ? 1.0 : 0.0});
+      rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
+                      fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
+                      fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
+                      fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
+                      c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
+                      fixed(c.thesis_step, 4)});
+      if (files && seed == 1) {
+        plot::write_csv(o.out_dir + "/posture_" + c.scene + "_trace.csv", r.trace);
+        write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
+                           c.scene.rfind("ankle", 0) == 0);
+      }
+    }
+  }
+  out << "Posture control on the uneven floor, 15 s walks (Sec. 4.3.4.2); distance = ground-truth "
+         "feet midpoint, fk = the thesis' FK measure\n";
+  print_table(out,
+              {"case", "seed", "steps", "dist[m]", "fk[m]", "v[m/s]", "step[m]", "pitch[rad]",
+               "roll[rad]", "fell", "thesis", "dist[m]", "v[m/s]", "step[m]"},
+              rows);
+  if (files) plot::write_csv(o.out_dir + "/posture_summary.csv", summary);
+  return 0;
+}
+
+}  // namespace stride::experiments
