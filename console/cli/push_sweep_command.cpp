@@ -4,6 +4,8 @@
 // pushes the standing robot's torso once per (impulse, direction) in a freshly loaded scene,
 // predicts the outcome from the post-push CoM state with balance::classify (thesis Ch. 7) and
 // compares it with what the simulation does in the next seconds.
+// The Ch. 7 models are sagittal: the CoM state along x is classified, so directions other than
+// 0 (forward) and 180 (backward) add lateral motion the prediction does not see.
 #include <algorithm>
 #include <array>
 #include <cmath>

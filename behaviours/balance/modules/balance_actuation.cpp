@@ -33,6 +33,13 @@ void command_hat_angle(JointRequest& r, const JointAngles& posture, double theta
   }
 }
 
+void command_body_tilt(JointRequest& r, const JointAngles& posture, double tilt) {
+  for (JointId j : {JointId::LAnklePitch, JointId::RAnklePitch}) {
+    r.mode[index(j)] = hal::ServoMode::Position;
+    r.position[index(j)] = posture[index(j)] - tilt;  // the foot stays, so the shin leans: -q
+  }
+}
+
 double measured_hat_angle(const JointSensorData& joints, const JointAngles& posture) {
   double sum = 0;
   for (JointId j : {JointId::LHipPitch, JointId::RHipPitch})

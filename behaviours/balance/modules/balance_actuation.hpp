@@ -22,6 +22,9 @@ void command_ankle_zmp(JointRequest& r, double zmp_x, double mass, double g);
 // Both hip pitch joints at the posture's angle minus theta.
 void command_hat_angle(JointRequest& r, const JointAngles& posture, double theta);
 
+// The whole body tilted forward by `tilt` about the ankles (both ankle pitch joints, position).
+void command_body_tilt(JointRequest& r, const JointAngles& posture, double tilt);
+
 // HAT angle from the measured hip pitch joints (mean of both sides).
 double measured_hat_angle(const JointSensorData& joints, const JointAngles& posture);
 

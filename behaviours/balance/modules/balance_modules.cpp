@@ -117,7 +117,17 @@ class HipBalance final : public StandingBalance {
       excursion_.reset();
       return;
     }
-    command_hat_angle(request_, posture_, clamp_theta(model_, *theta));
+    const double hat = clamp_theta(model_, *theta);
+    command_hat_angle(request_, posture_, hat);
+    if (params_.keep_com) keep_com_over_ankles(hat);
+  }
+
+  // The flywheel of Sec. 7.4 has no weight: a real trunk bent by theta carries the CoM along by
+  // m_HAT d sin(theta) / m, which tilting the whole body about the ankles takes back.
+  void keep_com_over_ankles(double theta) {
+    const double d = std::sqrt(model_.hat_inertia / model_.hat_mass);
+    const double shift = model_.hat_mass * d * std::sin(theta) / model_.mass;
+    command_body_tilt(request_, posture_, -shift / model_.com_height);
   }
 
   const HipBalanceParameters& params_;

@@ -35,6 +35,7 @@ struct HipBalanceParameters {
   double trigger = 0.01;      // capture-point deviation that starts a profile, m
   double hold_time = 0.5;     // HAT kept at its peak after t2, s
   double return_time = 1.0;   // back to the posture afterwards, s
+  bool keep_com = true;       // tilt back about the ankles by the trunk's CoM shift
   double stiffness = 1;
 
   static constexpr std::string_view kTypeName = "HipBalanceParameters";
@@ -45,6 +46,7 @@ struct HipBalanceParameters {
                            field("trigger", &P::trigger, "m", Range{0, 1}),
                            field("hold_time", &P::hold_time, "s", Range{0, 10}),
                            field("return_time", &P::return_time, "s", Range{0.01, 10}),
+                           field("keep_com", &P::keep_com),
                            field("stiffness", &P::stiffness, "", Range{0, 1}));
   }
 };

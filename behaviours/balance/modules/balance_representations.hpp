@@ -37,6 +37,7 @@ struct BalanceModel {
   double mass_above_ankles = 0;     // what the ankle torque carries (feet excluded), kg
   double com_height = 0;            // z_cm, m
   double hat_inertia = 0;           // I = m_HAT d^2 about the hip axis (Sec. 7.5.1), kg m^2
+  double hat_mass = 0;              // m_HAT: everything above the hips, kg
   double zmp_min = 0, zmp_max = 0;  // sole's back and front border in the ground frame, m
   double theta_max_forward = 0, theta_max_backward = 0;  // hip ROM from the standing posture
 
@@ -47,6 +48,7 @@ struct BalanceModel {
                            field("mass_above_ankles", &B::mass_above_ankles, "kg"),
                            field("com_height", &B::com_height, "m"),
                            field("hat_inertia", &B::hat_inertia, "kg*m^2"),
+                           field("hat_mass", &B::hat_mass, "kg"),
                            field("zmp_min", &B::zmp_min, "m"), field("zmp_max", &B::zmp_max, "m"),
                            field("theta_max_forward", &B::theta_max_forward, "rad"),
                            field("theta_max_backward", &B::theta_max_backward, "rad"));

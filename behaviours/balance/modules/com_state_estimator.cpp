@@ -108,6 +108,7 @@ BalanceModel KinematicCom::balance_model(const std::array<double, hal::kNumJoint
   Eigen::Vector3d d = hat_moment / hat_mass - hip_axis;
   d.y() = 0;  // distance in the sagittal plane, perpendicular to the pitch axis
   b.hat_inertia = hat_mass * d.squaredNorm();
+  b.hat_mass = hat_mass;
   b.zmp_min = nao::kSoleCentreX - nao::kSoleLength / 2;
   b.zmp_max = nao::kSoleCentreX + nao::kSoleLength / 2;
   // HAT angle theta = -(hip pitch - standing hip pitch): trunk forward is hip flexion (< 0).
