@@ -72,12 +72,13 @@ int run_knee_energy_experiment(const ExperimentOptions& o, std::ostream& out) {
         const WalkSummary s = summarize(r);
         const KneeEnergy e = knee_energy(r);
         falls += s.fell;
+        walks.add_row({double(sp.cm), double(conventional), double(seed), s.speed, e.left, e.right,
+                       e.left + e.right, double(e.samples), s.fell ? 1.0 : 0.0});
+        if (s.fell) continue;  // the thesis' walks were all stable: a fall is no energy sample
         rep[conventional].speed.push_back(s.speed);
         rep[conventional].left.push_back(e.left);
         rep[conventional].right.push_back(e.right);
         rep[conventional].total.push_back(e.left + e.right);
-        walks.add_row({double(sp.cm), double(conventional), double(seed), s.speed, e.left, e.right,
-                       e.left + e.right, double(e.samples), s.fell ? 1.0 : 0.0});
         if (files && seed == 1 && sp.cm == 10) {  // Fig. 4.13: knee currents at 0.10 m/s
           plot::Table cur{{"t", "left", "right"}};
           for (const auto& row : r.trace.rows)
@@ -95,12 +96,15 @@ int run_knee_energy_experiment(const ExperimentOptions& o, std::ostream& out) {
       }
     }
     const double ours = mean_work(rep[0].total), base = mean_work(rep[1].total);
-    auto minmax = [](const std::vector<double>& v) {
-      return std::minmax_element(v.begin(), v.end());
+    auto lo = [](const std::vector<double>& v) {
+      return v.empty() ? kNaN : *std::min_element(v.begin(), v.end());
     };
-    figure.add_row({mean_work(rep[0].speed), mean_work(rep[0].left), *minmax(rep[0].left).first,
-                    *minmax(rep[0].left).second, mean_work(rep[0].right), mean_work(rep[1].speed),
-                    mean_work(rep[1].left), *minmax(rep[1].left).first, *minmax(rep[1].left).second,
+    auto hi = [](const std::vector<double>& v) {
+      return v.empty() ? kNaN : *std::max_element(v.begin(), v.end());
+    };
+    figure.add_row({mean_work(rep[0].speed), mean_work(rep[0].left), lo(rep[0].left),
+                    hi(rep[0].left), mean_work(rep[0].right), mean_work(rep[1].speed),
+                    mean_work(rep[1].left), lo(rep[1].left), hi(rep[1].left),
                     mean_work(rep[1].right)});
     rows.push_back(
         {std::to_string(sp.cm), mean_std(rep[0].speed, 4), mean_std(rep[0].left, 1),
@@ -116,7 +120,7 @@ int run_knee_energy_experiment(const ExperimentOptions& o, std::ostream& out) {
               {"cm/s", "v stretched", "W_L [J]", "W_R [J]", "v conventional", "W_L [J]", "W_R [J]",
                "saving %", "thesis v (T4.4)", "thesis v (T4.5)", "thesis saving %"},
               rows);
-  if (falls > 0) out << falls << " walk(s) fell\n";
+  if (falls > 0) out << falls << " walk(s) fell and are left out of the means\n";
   if (files) {
     plot::write_csv(o.out_dir + "/energy_walks.csv", walks);
     write_plot(o, figure, "energy_fig4.14-15", "Knee energy in 20 s (mean and left min/max)",
