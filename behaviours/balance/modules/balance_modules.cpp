@@ -143,12 +143,13 @@ class CombinedBalance final : public StandingBalance {
   double stiffness() const override { return params_.stiffness; }
   void balance() override {
     ankle_pd(params_.kp, params_.kd);
-    const balance::BalanceParams p =
-        balance_params(model_, params_.tau_forward, params_.tau_backward);
+    balance::BalanceParams p = balance_params(model_, params_.tau_forward, params_.tau_backward);
+    p.zmp_min += params_.margin;  // the ZMP the ankle can really hold: the sole less a margin
+    p.zmp_max -= params_.margin;
     if (!excursion_) {
       const balance::ComState s = absolute_state();
       const double xi = balance::capture_point(s, p.omega());
-      if (xi > p.zmp_min + params_.margin && xi < p.zmp_max - params_.margin) return;
+      if (xi > p.zmp_min && xi < p.zmp_max) return;
       // Eq. 7.36: the ankle holds the border, the hip covers the rest of the capture point.
       excursion_ = HatExcursion{p, s, balance::plan_combined(p, s), frame_.time};
     }

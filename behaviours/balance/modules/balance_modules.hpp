@@ -56,7 +56,7 @@ struct CombinedBalanceParameters {
   double kd = 12;
   double tau_forward = 14;
   double tau_backward = -14;
-  double margin = 0.005;  // the hip starts when the capture point is this close to the sole edge
+  double margin = 0.005;  // sole edges less this are the ankle's ZMP range the hip plans with
   double hold_time = 0.5;
   double return_time = 1.0;
   double stiffness = 1;
