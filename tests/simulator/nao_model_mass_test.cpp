@@ -1,5 +1,6 @@
 // The loaded NAO model against the published numbers it was written from (nao-facts.md).
 #include <map>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -52,8 +53,8 @@ TEST(NaoModel, TotalMassAndCentreOfMassMatchPublishedNumbers) {
   for (const Row& r : kFacts) {
     const std::string name = r.link;
     const bool sided = name[0] == 'L';  // left links; the right mirrors them
-    for (double s :
-         sided ? std::initializer_list<double>{1, -1} : std::initializer_list<double>{1}) {
+    const std::vector<double> sides = sided ? std::vector<double>{1, -1} : std::vector<double>{1};
+    for (double s : sides) {
       const std::string base = sided ? name.substr(1) : name;
       mass += r.m;
       moment += r.m * (origin_of(base, s) + Eigen::Vector3d(r.x, s * r.y, r.z));
