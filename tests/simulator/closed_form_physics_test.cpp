@@ -60,6 +60,8 @@ TEST(ClosedFormPhysics, PendulumPeriodAndEnergyDrift) {
   }
   ASSERT_GE(crossings, 5);
   const double period = (last - first) / (crossings - 1);
+  RecordProperty("period_s", std::to_string(period));
+  RecordProperty("closed_form_period_s", std::to_string(expected));
   EXPECT_NEAR(period, expected, 0.005 * expected);
   const double swing_energy = m * kG * d * (1 - std::cos(0.05));
   RecordProperty("energy_drift_fraction_of_swing_energy", std::to_string(max_drift / swing_energy));

@@ -64,6 +64,8 @@ TEST(NaoStanding, FootSensorsWeighTheRobotAndCopLiesUnderTheFeet) {
       moment += force * w.head<2>();
     }
   }
+  RecordProperty("fsr_sum_N", std::to_string(sum));
+  RecordProperty("weight_N", std::to_string(weight));
   EXPECT_NEAR(sum, weight, 0.03 * weight);
   EXPECT_NEAR(left, right, 0.2 * weight);
   const Eigen::Vector2d cop = moment / sum;
