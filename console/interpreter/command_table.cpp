@@ -76,7 +76,7 @@ void check_log(const Words& a) {
   const std::size_t n = a.size() - 1;
   if (s == "stop" || s == "replay") {
     if (n != 0) throw Error("'log " + s + "' takes no arguments");
-  } else if (s == "start" || s == "load") {
+  } else if (s == "start" || s == "load" || s == "save") {
     if (n != 1) throw Error("'log " + s + "' takes one file");
   } else if (s == "goto") {
     if (n != 1) throw Error("'log goto' takes one frame number");
@@ -84,7 +84,7 @@ void check_log(const Words& a) {
   } else if (s == "export") {
     if (n < 2) throw Error("'log export' takes a csv file and at least one key");
   } else {
-    throw Error("unknown log action '" + s + "' (start, stop, load, goto, export, replay)");
+    throw Error("unknown log action '" + s + "' (start, stop, save, load, goto, export, replay)");
   }
 }
 void check_push(const Words& a) {
@@ -137,7 +137,8 @@ const std::vector<CommandSpec>& command_table() {
        1, -1, check_watch},
       {"plot", "plot <key>... [to file.csv] | plot stop", "record values; stop writes CSV + PNG", 1,
        -1, check_plot},
-      {"log", "log start <file>|stop|load <file>|goto <frame>|export <csv> <key>...|replay",
+      {"log",
+       "log start <file>|stop|save <file>|load <file>|goto <frame>|export <csv> <key>...|replay",
        "record, load, browse, export and replay logs", 1, -1, check_log},
       {"report", "report [file]", "run report (JSON with the state hash if a file is given)", 0, 1,
        nullptr},

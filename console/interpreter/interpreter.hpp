@@ -71,6 +71,7 @@ class Interpreter {
 
   std::vector<std::string> plot_keys_;
   std::string plot_file_;
+  std::string log_path_;  // log being recorded or last recorded/loaded, for `log save`
   plot::Table plot_table_;
 
   std::chrono::steady_clock::time_point run_wall_start_;

@@ -1,6 +1,7 @@
 // The commands of Interpreter that need more than one line: help, get, mr, dr, watch, plot, log,
 // report, expect, wait until.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <ostream>
 
@@ -128,11 +129,22 @@ void Interpreter::log(const std::vector<std::string>& a) {
   const std::string& what = a[0];
   if (what == "start") {
     target_.log_start(a[1]);
+    log_path_ = a[1];
     out_ << "logging to " << a[1] << "\n";
   } else if (what == "stop") {
     target_.log_stop();
   } else if (what == "load") {
     out_ << a[1] << ": " << target_.log_load(resolve(a[1])) << " frames\n";
+    log_path_ = resolve(a[1]);
+  } else if (what == "save") {
+    // Logs are flushed every frame, so a copy holds every complete frame even while recording.
+    if (log_path_.empty()) throw Error("log save: no log recorded or loaded yet");
+    std::error_code ec;
+    std::filesystem::copy_file(log_path_, a[1], std::filesystem::copy_options::overwrite_existing,
+                               ec);
+    if (ec)
+      throw Error("log save: cannot copy '" + log_path_ + "' to '" + a[1] + "': " + ec.message());
+    out_ << "saved " << log_path_ << " as " << a[1] << "\n";
   } else if (what == "goto") {
     const auto skipped = target_.log_goto(
         static_cast<std::size_t>(parse_integer(a[1], "frame", 0, 1000000000000LL)));
