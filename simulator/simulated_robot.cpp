@@ -3,21 +3,12 @@
 #include <cmath>
 
 #include "robot/core/error.hpp"
+#include "robot/core/pose.hpp"
 #include "robot/model/link_poses.hpp"
 #include "robot/model/urdf_loader.hpp"
 
 namespace stride::sim {
 namespace {
-
-Eigen::Isometry3d rpy_pose(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() = xyz;
-  t.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-                Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-                Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-                   .toRotationMatrix();
-  return t;
-}
 
 // Lowest z of every collision shape with the root at `root` and joints at q.
 double lowest_point(const model::RobotModel& m, const model::JointVector& q,
@@ -76,7 +67,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
     q[j] = value;
   }
   model::apply_mimic(*model_, q);
-  Eigen::Isometry3d root = rpy_pose(placement.xyz, placement.rpy);
+  Eigen::Isometry3d root = pose_from_xyz_rpy(placement.xyz, placement.rpy);
   if (placement.auto_height) root.translation().z() -= lowest_point(*model_, q, root);
 
   try {

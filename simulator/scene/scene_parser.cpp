@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "robot/core/error.hpp"
+#include "robot/core/pose.hpp"
 #include "robot/core/xml_error.hpp"
 #include "simulator/scene/xml_element.hpp"
 
@@ -16,16 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
-
-Eigen::Isometry3d pose_from(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy) {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.translation() = xyz;
-  t.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-                Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-                Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-                   .toRotationMatrix();
-  return t;
-}
 
 class Parser {
  public:
@@ -156,8 +147,8 @@ class Parser {
     b.name = e.text_or("name", "box" + std::to_string(out_.boxes.size()));
     b.size = e.vector3_or("size", b.size, Dimension::Length);
     if ((b.size.array() <= 0).any()) e.fail_attr("size", "expected three lengths > 0");
-    b.pose = pose_from(e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length),
-                       e.vector3_or("rpy", Eigen::Vector3d::Zero(), Dimension::Angle));
+    b.pose = pose_from_xyz_rpy(e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length),
+                               e.vector3_or("rpy", Eigen::Vector3d::Zero(), Dimension::Angle));
     b.friction = non_negative(e, "friction", b.friction);
     b.line = e.line();
     out_.boxes.push_back(b);
