@@ -121,21 +121,6 @@ std::vector<double> parse_list(const std::string& flag, const std::string& text)
   return v;
 }
 
-// Mass-weighted CoM position and velocity of the simulated robot, world frame.
-std::pair<Eigen::Vector3d, Eigen::Vector3d> true_com_state(const sim::RobotBody& body) {
-  double mass = 0;
-  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
-  for (int l = 0; l < body.link_count(); ++l) {
-    const double m = body.model().links[l].inertial.mass;
-    if (m <= 0 || !body.body(l)) continue;
-    const dReal* lv = dBodyGetLinearVel(body.body(l));
-    p += m * body.link_com(l);
-    v += m * Eigen::Vector3d(lv[0], lv[1], lv[2]);
-    mass += m;
-  }
-  return {p / mass, v / mass};
-}
-
 std::array<Eigen::Vector2d, 2> foot_positions(const sim::RobotBody& body) {
   const auto& m = body.model();
   return {body.link_pose(m.link_index("LFoot")).translation().head<2>(),
@@ -169,7 +154,7 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
   r.direction = direction;
   const ComState& com = rt.representation<ComState>();
   r.estimated = {com.x, com.xdot};
-  const auto [p, v] = true_com_state(body);
+  const Eigen::Vector3d p = body.centre_of_mass(), v = body.centre_of_mass_velocity();
   const auto feet = foot_positions(body);
   r.truth = {p.x() - 0.5 * (feet[0].x() + feet[1].x()), v.x()};  // ground frame: ankles' midpoint
   const BalanceModel& model = rt.representation<BalanceModel>();

@@ -191,4 +191,16 @@ Eigen::Vector3d RobotBody::centre_of_mass() const {
   return m > 0 ? Eigen::Vector3d(sum / m) : sum;
 }
 
+Eigen::Vector3d RobotBody::centre_of_mass_velocity() const {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double m = 0;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const double mi = model_.links[i].inertial.mass;
+    const dReal* v = dBodyGetLinearVel(bodies_[i]);
+    sum += mi * Eigen::Vector3d(v[0], v[1], v[2]);
+    m += mi;
+  }
+  return m > 0 ? Eigen::Vector3d(sum / m) : sum;
+}
+
 }  // namespace stride::sim

@@ -35,6 +35,8 @@ class RobotBody {
 
   // Whole-robot centre of mass in the world frame (mass-weighted body positions).
   Eigen::Vector3d centre_of_mass() const;
+  // Its velocity (mass-weighted body velocities), world frame.
+  Eigen::Vector3d centre_of_mass_velocity() const;
 
  private:
   const model::RobotModel& model_;

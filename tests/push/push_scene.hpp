@@ -26,22 +26,12 @@ struct TrueCom {
 };
 
 inline TrueCom true_com(const sim::RobotBody& body) {
-  double mass = 0;
-  Eigen::Vector3d p = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero();
-  for (int l = 0; l < body.link_count(); ++l) {
-    const double m = body.model().links[l].inertial.mass;
-    if (m <= 0 || !body.body(l)) continue;
-    const dReal* lv = dBodyGetLinearVel(body.body(l));
-    p += m * body.link_com(l);
-    v += m * Eigen::Vector3d(lv[0], lv[1], lv[2]);
-    mass += m;
-  }
   const auto& model = body.model();
   const Eigen::Vector3d ankles = 0.5 * (body.link_pose(model.link_index("LFoot")).translation() +
                                         body.link_pose(model.link_index("RFoot")).translation());
   Eigen::Vector3d origin = ankles;
   origin.z() = 0;  // the ground plane
-  return {p / mass - origin, v / mass};
+  return {body.centre_of_mass() - origin, body.centre_of_mass_velocity()};
 }
 
 }  // namespace stride::push_test
