@@ -20,11 +20,13 @@ double sole_x_from_fk(const hal::SensorFrame& s, model::Side side) {
 void WalkMetrics::observe(const SimulatedRobot& robot) {
   const hal::SensorFrame& s = robot.latest_sensors();
   const TorsoPose torso = robot.torso_pose();
-  const auto& m = robot.model();
-  const int lfoot = m.link_index("LFoot"), rfoot = m.link_index("RFoot");
-  if (lfoot < 0 || rfoot < 0) return;  // walking figures only for robots with NAO feet
-  const double xl = robot.body().link_pose(lfoot).translation().x();
-  const double xr = robot.body().link_pose(rfoot).translation().x();
+  if (lfoot_ == -2) {
+    lfoot_ = robot.model().link_index("LFoot");
+    rfoot_ = robot.model().link_index("RFoot");
+  }
+  if (lfoot_ < 0 || rfoot_ < 0) return;  // walking figures only for robots with NAO feet
+  const double xl = robot.body().link_pose(lfoot_).translation().x();
+  const double xr = robot.body().link_pose(rfoot_).translation().x();
   t_ = s.time;
   x_mid_ = 0.5 * (xl + xr);
   x_torso_ = torso.x;

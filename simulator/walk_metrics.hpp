@@ -30,6 +30,7 @@ class WalkMetrics {
 
  private:
   double threshold_;
+  int lfoot_ = -2, rfoot_ = -2;  // link indices, looked up on the first frame (-1: no such link)
   bool started_ = false;
   double t0_ = 0, t_ = 0;
   double x0_mid_ = 0, x0_torso_ = 0, x_mid_ = 0, x_torso_ = 0;
