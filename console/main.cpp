@@ -10,7 +10,10 @@
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   const auto& table = stride::cli::subcommands();
-  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+  const auto is_help = [](const std::string& a) {
+    return a == "--help" || a == "-h" || a == "help";
+  };
+  if (!args.empty() && is_help(args[0])) {
     std::cout << "usage: stride <command> [arguments]\n";
     for (const auto& s : table) std::cout << "  " << s.summary << "\n";
     std::cout << stride::console::console_usage();
@@ -18,7 +21,12 @@ int main(int argc, char** argv) {
   }
   if (!args.empty())
     for (const auto& s : table)
-      if (s.name == args[0])
+      if (s.name == args[0]) {
+        if (args.size() == 2 && is_help(args[1])) {  // `stride run --help`: its usage line
+          std::cout << "usage: stride " << s.summary << "\n";
+          return 0;
+        }
         return s.run(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
+      }
   return stride::console::console_main(args, std::cout, std::cerr);
 }

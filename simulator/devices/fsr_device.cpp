@@ -19,12 +19,14 @@ std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& poin
   // Four unknowns: try every support subset, keep the feasible one that best meets the moments.
   for (int mask = 1; mask < 16; ++mask) {
     const int n = __builtin_popcount(mask);
-    Eigen::MatrixXd a(3, n);
+    // Bounded sizes keep this per-frame solve off the heap.
+    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4> a(3, n);
     int col = 0;
     for (int i = 0; i < 4; ++i)
       if (mask & (1 << i)) a.col(col++) = Eigen::Vector3d(1.0, points[i].x(), points[i].y());
     // Least-norm least-squares solution on this subset.
-    const Eigen::VectorXd f = a.completeOrthogonalDecomposition().solve(b);
+    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> f =
+        a.completeOrthogonalDecomposition().solve(b);
     if ((f.array() < -1e-12).any()) continue;
     const double residual = (a * f - b).norm();
     const double norm = f.squaredNorm();
