@@ -43,6 +43,7 @@ class Simulation {
   std::uint64_t steps() const { return steps_; }
   const SceneDescription& scene() const { return scene_; }
   PhysicsWorld& world() { return *world_; }
+  const PhysicsWorld& world() const { return *world_; }
   int robot_count() const { return static_cast<int>(robots_.size()); }
   SimulatedRobot& robot(int i) { return *robots_[i]; }
   const SimulatedRobot& robot(int i) const { return *robots_[i]; }

@@ -1,5 +1,8 @@
-// `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file]`: a headless run.
+// `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
+// [--video dir] [--view v] [--fps N]`: a headless run, optionally with pictures.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <ostream>
@@ -8,6 +11,8 @@
 #include "console/cli/subcommand.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
+#include "simulator/render/snapshot.hpp"
+#include "simulator/render/views.hpp"
 #include "simulator/run_report.hpp"
 
 namespace stride::cli {
@@ -23,6 +28,11 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string report = a.text_or("--report", "");
 
     const std::string log = a.text_or("--log", "");
+    const std::string snapshot = a.text_or("--snapshot", "");
+    const std::string video = a.text_or("--video", "");
+    const std::string view = a.text_or("--view", "");
+    const double fps = a.number_or("--fps", 25.0);
+    if (!(fps >= 1 && fps <= 1000)) throw Error("stride run: --fps: expected 1 to 1000 frames/s");
     a.finish();
 
     console::SimSession session(scene, seed);
@@ -31,8 +41,24 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       if (!session.runtime(0)) throw Error("stride run: --log: robot 0 has no <controller>");
       session.runtime(0)->start_log(log);
     }
+    render::WorldRenderer renderer;
+    render::VideoRecorder recorder;
+    if (!video.empty())
+      recorder.start(
+          sim, video, view,
+          std::max<std::uint64_t>(1, std::llround(1.0 / (fps * sim.scene().physics.step))));
+    else if (!snapshot.empty())
+      render::resolve_view(sim, view);  // a bad view fails before the run, not after it
     const auto t0 = std::chrono::steady_clock::now();
-    sim.run_for(seconds);
+    if (recorder.active()) {
+      const auto n = static_cast<std::uint64_t>(std::llround(seconds / sim.scene().physics.step));
+      for (std::uint64_t k = 0; k < n; ++k) {
+        sim.step();
+        recorder.after_step(renderer, sim);
+      }
+    } else {
+      sim.run_for(seconds);
+    }
     sim::RunTiming timing;
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out << sim::run_report_text(sim, timing);
@@ -41,6 +67,8 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       if (!f) throw Error("stride run: --report: cannot write '" + report + "'");
       f << sim::run_report_json(sim, timing);
     }
+    if (!snapshot.empty()) render::write_snapshot(renderer, sim, snapshot, view);
+    if (recorder.active()) out << "video: " << recorder.frames() << " frames in " << video << "\n";
     return 0;
   } catch (const Error& e) {
     err << e.what() << "\n";

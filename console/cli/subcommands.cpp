@@ -15,17 +15,30 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"balance", "balance classify|ankle-boundaries|closed-loop|hip|combined|lqr [--x0 m --v0 m/s ...] [--json] [--csv f] [--plots dir]: Ch. 7 balance analysis", balance_main},
-      {"push-sweep", "push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step --directions 0,180 [--duration s] [--csv f] [--json]: Ch. 7 push experiments", push_sweep_main},
-      {"run", "run <scene> --seconds S [--seed N] [--report out.json] [--log file]: headless simulation",
+      {"balance",
+       "balance classify|ankle-boundaries|closed-loop|hip|combined|lqr [--x0 m --v0 m/s ...] "
+       "[--json] [--csv f] [--plots dir]: Ch. 7 balance analysis",
+       balance_main},
+      {"push-sweep",
+       "push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step --directions "
+       "0,180 [--duration s] [--csv f] [--json]: Ch. 7 push experiments",
+       push_sweep_main},
+      {"run",
+       "run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png] "
+       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N]: headless simulation",
        run_main},
-      {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics", kin_main},
-      {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)", dyn_main},
+      {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics",
+       kin_main},
+      {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)",
+       dyn_main},
       {"pattern",
        "pattern [--preset P] [--set name=value ...] [--conventional] --csv out.csv [--plots dir]: "
        "walking pattern (Ch. 3) offline",
        pattern_main},
-      {"experiment", "experiment posture|knee-energy|kalman|fastest|arm-swing [--seeds N] [--out dir] [--scenes dir] [--no-plots]: Ch. 4 experiments", experiment_main},
+      {"experiment",
+       "experiment posture|knee-energy|kalman|fastest|arm-swing [--seeds N] [--out dir] [--scenes "
+       "dir] [--no-plots]: Ch. 4 experiments",
+       experiment_main},
   };
   return table;
 }

@@ -92,6 +92,24 @@ void check_push(const Words& a) {
   for (int i = 0; i < 3; ++i) parse_number(a[i + 1], names[i]);
   if (!(parse_number(a[4], "seconds") > 0)) throw Error("seconds: expected > 0");
 }
+void check_snapshot(const Words& a) {
+  if (a[0].size() < 5 || a[0].substr(a[0].size() - 4) != ".png")
+    throw Error("expected a file name ending in .png, got '" + a[0] + "'");
+}
+void check_video(const Words& a) {
+  if (a[0] == "stop") {
+    if (a.size() != 1) throw Error("video stop takes no arguments");
+    return;
+  }
+  if (a[0] != "start") throw Error("expected start or stop, got '" + a[0] + "'");
+  if (a.size() < 2) throw Error("video start: expected a directory");
+  std::size_t i = 2;
+  if (i < a.size() && a[i] != "fps") ++i;  // a view name
+  if (i < a.size()) {
+    if (a[i] != "fps" || i + 2 != a.size()) throw Error("expected 'fps <frames per second>' last");
+    parse_integer(a[i + 1], "fps", 1, 1000);
+  }
+}
 void check_mv(const Words& a) {
   const char* names[] = {"x", "y", "z", "yaw"};
   for (std::size_t i = 0; i < a.size(); ++i) parse_number(a[i], names[i]);
@@ -146,6 +164,10 @@ const std::vector<CommandSpec>& command_table() {
        check_push},
       {"mv", "mv <x> <y> <z> [yaw]", "move the robot (m, rad)", 3, 4, check_mv},
       {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
+      {"snapshot", "snapshot <file.png> [view]",
+       "render a picture (views: follow, front, side, top, scene cameras)", 1, 2, check_snapshot},
+      {"video", "video start <dir> [view] [fps N] | video stop",
+       "write numbered PNG frames while running (default 25 fps)", 1, 5, check_video},
       {"expect", "expect <key> <op> <value> [tolerance]", "check a value; fails a script", 3, 4,
        check_expect},
       {"wait", "wait until <key> <op> <value> [timeout <seconds>]", "run until a condition holds",

@@ -216,6 +216,12 @@ void Interpreter::dispatch(const Command& c) {
     return;
   }
   if (n == "sn") return target_.sensor_switch(a[0], parse_on_off(a[1], a[0]));
+  if (n == "snapshot") {
+    target_.snapshot(a[0], a.size() > 1 ? a[1] : "");
+    out_ << "wrote " << a[0] << "\n";
+    return;
+  }
+  if (n == "video") return video(a);
   if (n == "expect") return expect(a);
   if (n == "wait") return wait_until(a);
   if (n == "call") return run_script(resolve(a[0]));

@@ -55,6 +55,7 @@ class Interpreter {
   void plot(const std::vector<std::string>& a);
   void log(const std::vector<std::string>& a);
   void report(const std::vector<std::string>& a);
+  void video(const std::vector<std::string>& a);
   void expect(const std::vector<std::string>& a);
   void wait_until(const std::vector<std::string>& a);
 

@@ -41,6 +41,7 @@ void LocalTarget::load(const std::string& scene_path) {
   auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
   session_ = std::move(fresh);
   swapped_ = false;
+  video_.stop();  // a recording belongs to the scene it started in
 }
 
 void LocalTarget::reset() {
@@ -54,6 +55,7 @@ std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool
   while (done < steps) {
     sim.step();
     ++done;
+    if (video_.active()) video_.after_step(renderer(), sim);
     if (after_step && !after_step()) break;
   }
   return done;
@@ -223,6 +225,25 @@ void LocalTarget::sensor_switch(const std::string& which, bool on) {
     s.quantise = on;
   else
     throw Error("unknown sensor switch '" + which + "' (noise, delay, quantise)");
+}
+
+render::WorldRenderer& LocalTarget::renderer() {
+  if (!renderer_) renderer_ = std::make_unique<render::WorldRenderer>();
+  return *renderer_;
+}
+
+void LocalTarget::snapshot(const std::string& png_path, const std::string& view) {
+  render::write_snapshot(renderer(), session().simulation(), png_path, view);
+}
+
+void LocalTarget::video_start(const std::string& dir, const std::string& view,
+                              std::uint64_t every_steps) {
+  video_.start(session().simulation(), dir, view, every_steps);
+}
+
+std::uint64_t LocalTarget::video_stop() {
+  video_.stop();
+  return video_.frames();
 }
 
 }  // namespace stride::console

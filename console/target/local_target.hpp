@@ -7,6 +7,7 @@
 #include "console/session/sim_session.hpp"
 #include "console/target/target.hpp"
 #include "robot/runtime/log.hpp"
+#include "simulator/render/snapshot.hpp"
 
 namespace stride::console {
 
@@ -47,16 +48,23 @@ class LocalTarget final : public Target {
   void push(const std::string& body, double fx, double fy, double fz, double seconds) override;
   void move_robot(double x, double y, double z, double yaw) override;
   void sensor_switch(const std::string& which, bool on) override;
+  void snapshot(const std::string& png_path, const std::string& view) override;
+  void video_start(const std::string& dir, const std::string& view,
+                   std::uint64_t every_steps) override;
+  std::uint64_t video_stop() override;
 
   SimSession& session();
 
  private:
   Runtime& runtime();
+  render::WorldRenderer& renderer();
   std::string sim_value(const std::string& key);
 
   std::unique_ptr<SimSession> session_;
   std::unique_ptr<LogReader> log_;
   std::optional<ReplaySummary> replay_;
+  std::unique_ptr<render::WorldRenderer> renderer_;  // made at the first picture
+  render::VideoRecorder video_;
   bool swapped_ = false;  // a provider swap makes the scene's configuration differ from the log's
 };
 

@@ -61,6 +61,12 @@ class Target {
   virtual void push(const std::string& body, double fx, double fy, double fz, double seconds) = 0;
   virtual void move_robot(double x, double y, double z, double yaw) = 0;
   virtual void sensor_switch(const std::string& which, bool on) = 0;
+
+  // Pictures: `view` is a built-in view (follow, front, side, top) or a scene camera.
+  virtual void snapshot(const std::string& png_path, const std::string& view) = 0;
+  virtual void video_start(const std::string& dir, const std::string& view,
+                           std::uint64_t every_steps) = 0;
+  virtual std::uint64_t video_stop() = 0;  // frames written
 };
 
 }  // namespace stride::console

@@ -91,6 +91,22 @@ struct TimedPush {
   int line = 0;
 };
 
+// A viewpoint for snapshots and videos, named so `snapshot <file> <name>` can pick it.
+struct SceneCamera {
+  std::string name;
+  Eigen::Vector3d eye{1.0, -0.8, 0.5};
+  Eigen::Vector3d look_at{0, 0, 0.25};
+  double fov = 0.8;  // vertical field of view, rad
+  int width = 640, height = 480;
+  int line = 0;
+};
+
+// A directional light for snapshots (the renderer's default light is used when none is given).
+struct SceneLight {
+  Eigen::Vector3d direction{-0.4, 0.3, -1.0};  // the way the light travels
+  double intensity = 0.8;
+};
+
 struct SceneDescription {
   std::string name;
   std::string file;  // top-level file
@@ -100,6 +116,8 @@ struct SceneDescription {
   std::vector<UnevenPatch> uneven;
   std::vector<RobotPlacement> robots;
   std::vector<TimedPush> pushes;
+  std::vector<SceneCamera> cameras;
+  std::vector<SceneLight> lights;
 };
 
 }  // namespace stride::sim

@@ -79,12 +79,18 @@ class Parser {
       robot(e);
     else if (n == "push")
       push(e);
+    else if (n == "camera")
+      camera(e);
+    else if (n == "light")
+      light(e);
     else if (n == "include") {
       e.allow_only({"file"});
       parse_file(resolve(e, e.text("file")), &e);
     } else
       e.fail(
-          "unknown element (expected physics, ground, box, ramp, uneven, robot, push or include)");
+          "unknown element (expected physics, ground, box, ramp, uneven, robot, push, camera, "
+          "light "
+          "or include)");
   }
 
   void no_children(const XmlElement& e) {
@@ -178,6 +184,37 @@ class Parser {
     b.friction = non_negative(e, "friction", b.friction);
     b.line = e.line();
     out_.boxes.push_back(b);
+  }
+
+  void camera(const XmlElement& e) {
+    e.allow_only({"name", "xyz", "look_at", "fov", "width", "height"});
+    no_children(e);
+    SceneCamera c;
+    c.name = e.text("name");
+    for (const SceneCamera& other : out_.cameras)
+      if (other.name == c.name) e.fail_attr("name", "a camera '" + c.name + "' exists already");
+    c.eye = e.vector3_or("xyz", c.eye, Dimension::Length);
+    c.look_at = e.vector3_or("look_at", c.look_at, Dimension::Length);
+    if ((c.look_at - c.eye).norm() < 1e-6) e.fail_attr("look_at", "expected a point away from xyz");
+    c.fov = e.number_or("fov", c.fov, Dimension::Angle);
+    if (!(c.fov > 0.05 && c.fov < 3.0)) e.fail_attr("fov", "expected an angle in (0.05, 3) rad");
+    c.width = e.integer_or("width", c.width, 16, 4096);
+    c.height = e.integer_or("height", c.height, 16, 4096);
+    c.line = e.line();
+    out_.cameras.push_back(c);
+  }
+
+  void light(const XmlElement& e) {
+    e.allow_only({"direction", "intensity"});
+    no_children(e);
+    if (out_.lights.size() >= 8) e.fail("at most 8 lights");
+    SceneLight l;
+    l.direction = e.vector3_or("direction", l.direction);
+    if (l.direction.norm() < 1e-9) e.fail_attr("direction", "expected a non-zero vector");
+    l.intensity = e.number_or("intensity", l.intensity);
+    if (!(l.intensity >= 0 && l.intensity <= 1))
+      e.fail_attr("intensity", "expected a value in [0, 1]");
+    out_.lights.push_back(l);
   }
 
   void uneven(const XmlElement& e) {

@@ -22,6 +22,7 @@ class PhysicsWorld {
 
   dWorldID world() const { return world_; }
   dSpaceID robot_space() const { return robot_space_; }
+  dSpaceID static_space() const { return static_space_; }
   const PhysicsSettings& settings() const { return physics_; }
 
   void add_static_box(const StaticBox& box);

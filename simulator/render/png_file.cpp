@@ -1,0 +1,38 @@
+#include "simulator/render/png_file.hpp"
+
+#include <cstring>
+
+#include <png.h>
+
+#include "robot/core/error.hpp"
+
+namespace stride::render {
+
+void write_png(const std::string& path, const RgbaImage& image) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width);
+  png.height = static_cast<png_uint_32>(image.height);
+  png.format = PNG_FORMAT_RGBA;
+  if (!png_image_write_to_file(&png, path.c_str(), 0, image.rgba.data(), 0, nullptr))
+    throw Error("cannot write PNG '" + path + "': " + png.message);
+}
+
+RgbaImage read_png(const std::string& path) {
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str()))
+    throw Error("cannot read PNG '" + path + "': " + png.message);
+  png.format = PNG_FORMAT_RGBA;
+  RgbaImage out;
+  out.width = static_cast<int>(png.width);
+  out.height = static_cast<int>(png.height);
+  out.rgba.resize(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, out.rgba.data(), 0, nullptr))
+    throw Error("cannot read PNG '" + path + "': " + png.message);
+  return out;
+}
+
+}  // namespace stride::render

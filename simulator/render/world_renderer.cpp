@@ -1,0 +1,136 @@
+#include "simulator/render/world_renderer.hpp"
+
+#include <GL/gl.h>
+#include <ode/ode.h>
+
+#include "simulator/render/gl_shapes.hpp"
+#include "simulator/render/offscreen_gl.hpp"
+#include "simulator/world/geom_info.hpp"
+#include "simulator/world/physics_world.hpp"
+
+namespace stride::render {
+namespace {
+
+void set_colour(const sim::GeomInfo* info) {
+  if (!info || info->robot < 0) {
+    glColor3d(0.62, 0.55, 0.47);  // static environment
+    return;
+  }
+  // Neighbouring links alternate in shade so the chain reads in a still picture.
+  const double shade = info->link % 2 == 0 ? 0.86 : 0.74;
+  if (info->robot == 0)
+    glColor3d(shade, shade, shade * 1.04);
+  else
+    glColor3d(shade * 0.8, shade * 0.9, shade * 1.1);
+}
+
+void load_pose(dGeomID g) {
+  const dReal* p = dGeomGetPosition(g);
+  const dReal* r = dGeomGetRotation(g);  // row-major 3x4
+  const double m[16] = {r[0], r[4], r[8],  0, r[1], r[5], r[9], 0,
+                        r[2], r[6], r[10], 0, p[0], p[1], p[2], 1};
+  glMultMatrixd(m);
+}
+
+void draw_geom(dGeomID g, const CameraView& view) {
+  const int cls = dGeomGetClass(g);
+  if (cls == dPlaneClass) {
+    dVector4 plane;
+    dGeomPlaneGetParams(g, plane);
+    if (plane[2] < 0.999) return;  // only level ground is drawn
+    glPushMatrix();
+    glTranslated(0, 0, plane[3]);
+    draw_checker_floor(view.target.x(), view.target.y(), 12.0, 0.25);
+    glPopMatrix();
+    return;
+  }
+  set_colour(static_cast<const sim::GeomInfo*>(dGeomGetData(g)));
+  glPushMatrix();
+  load_pose(g);
+  switch (cls) {
+    case dBoxClass: {
+      dVector3 s;
+      dGeomBoxGetLengths(g, s);
+      draw_box(s[0], s[1], s[2]);
+      break;
+    }
+    case dCylinderClass: {
+      dReal r, l;
+      dGeomCylinderGetParams(g, &r, &l);
+      draw_cylinder(r, l);
+      break;
+    }
+    case dCapsuleClass: {
+      dReal r, l;
+      dGeomCapsuleGetParams(g, &r, &l);
+      draw_capsule(r, l);
+      break;
+    }
+    case dSphereClass:
+      draw_sphere(dGeomSphereGetRadius(g));
+      break;
+    default:
+      break;  // no other shapes are built from scenes
+  }
+  glPopMatrix();
+}
+
+void draw_space(dSpaceID space, const CameraView& view) {
+  const int n = dSpaceGetNumGeoms(space);
+  for (int i = 0; i < n; ++i) draw_geom(dSpaceGetGeom(space, i), view);
+}
+
+void set_lights(const std::vector<sim::SceneLight>& lights) {
+  static const std::vector<sim::SceneLight> fallback = {sim::SceneLight{}};
+  const auto& use = lights.empty() ? fallback : lights;
+  const float ambient[4] = {0.35f, 0.35f, 0.35f, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+  for (size_t i = 0; i < use.size() && i < 8; ++i) {
+    const GLenum id = GL_LIGHT0 + static_cast<GLenum>(i);
+    const Eigen::Vector3d towards = -use[i].direction.normalized();
+    const float pos[4] = {static_cast<float>(towards.x()), static_cast<float>(towards.y()),
+                          static_cast<float>(towards.z()), 0};  // w = 0: directional
+    const auto k = static_cast<float>(use[i].intensity);
+    const float diffuse[4] = {k, k, k, 1};
+    const float none[4] = {0, 0, 0, 1};
+    glEnable(id);
+    glLightfv(id, GL_POSITION, pos);
+    glLightfv(id, GL_DIFFUSE, diffuse);
+    glLightfv(id, GL_AMBIENT, none);
+  }
+}
+
+}  // namespace
+
+WorldRenderer::WorldRenderer() = default;
+WorldRenderer::~WorldRenderer() = default;
+
+RgbaImage WorldRenderer::render(const sim::PhysicsWorld& world, const CameraView& view,
+                                const std::vector<sim::SceneLight>& lights) {
+  if (!gl_ || gl_->width() != view.width || gl_->height() != view.height)
+    gl_ = std::make_unique<OffscreenGl>(view.width, view.height);
+  gl_->make_current();
+  glViewport(0, 0, view.width, view.height);
+  glClearColor(0.62f, 0.74f, 0.86f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_COLOR_MATERIAL);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glEnable(GL_NORMALIZE);
+  glShadeModel(GL_SMOOTH);
+
+  glMatrixMode(GL_PROJECTION);
+  const Eigen::Matrix4d projection = projection_matrix(view);
+  glLoadMatrixd(projection.data());
+  glMatrixMode(GL_MODELVIEW);
+  const Eigen::Matrix4d camera = view_matrix(view);
+  glLoadMatrixd(camera.data());
+  set_lights(lights);  // after the view matrix: light directions are in the world frame
+
+  draw_space(world.static_space(), view);
+  draw_space(world.robot_space(), view);
+  return gl_->read();
+}
+
+}  // namespace stride::render
