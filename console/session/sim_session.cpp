@@ -1,5 +1,7 @@
 #include "console/session/sim_session.hpp"
 
+#include <memory>
+
 #include "behaviours/module_catalogue.hpp"
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_parser.hpp"
@@ -7,6 +9,15 @@
 namespace stride::console {
 
 namespace {
+void apply_change(Runtime& rt, const sim::ControllerChange& c) {
+  if (c.kind == sim::ControllerChange::Kind::Provider) {
+    rt.swap_provider(c.first, c.second);
+    return;
+  }
+  const auto dot = c.first.find('.');
+  rt.set_parameters(c.first.substr(0, dot), c.first.substr(dot + 1) + "=" + c.second);
+}
+
 sim::SceneDescription load(const std::string& path, std::optional<std::uint64_t> seed) {
   sim::SceneDescription s = sim::parse_scene_file(path);
   if (seed) s.physics.seed = *seed;
@@ -43,11 +54,30 @@ void SimSession::attach_controllers() {
     } catch (const Error& e) {
       throw error_at(placement.file, placement.line, "<controller>: " + std::string(e.what()));
     }
+    // Timed changes are tried in order on a scratch controller so a bad one fails at load.
+    if (!placement.controller.changes.empty()) {
+      Runtime scratch(registry_, runtime_config(i), sim_->robot(i));
+      for (const auto& c : placement.controller.changes) {
+        try {
+          apply_change(scratch, c);
+        } catch (const Error& e) {
+          throw error_at(c.file, c.line, "<at>: " + std::string(e.what()));
+        }
+      }
+    }
   }
   runtimes_ = std::move(runtimes);
   for (int i = 0; i < sim_->robot_count(); ++i) {
     Runtime* rt = runtimes_[i].get();
-    if (rt) sim_->set_controller(i, [rt](sim::SimulatedRobot&) { rt->step(); });
+    if (!rt) continue;
+    const auto* changes = &sim_->scene().robots[i].controller.changes;
+    auto next = std::make_shared<std::size_t>(0);
+    sim::Simulation* sim = sim_.get();
+    sim_->set_controller(i, [rt, changes, next, sim](sim::SimulatedRobot&) {
+      while (*next < changes->size() && (*changes)[*next].time <= sim->time() + 1e-9)
+        apply_change(*rt, (*changes)[(*next)++]);
+      rt->step();
+    });
   }
 }
 

@@ -50,9 +50,19 @@ struct UnevenPatch {
   std::uint64_t seed = 0;  // 0: derived from the scene seed
 };
 
+// A change to a running controller at a given time: a provider swap or a parameter value.
+struct ControllerChange {
+  double time = 0;  // s since the scene started
+  enum class Kind { Provider, Parameter } kind = Kind::Parameter;
+  std::string first, second;  // provider: representation, module; parameter: "Module.field", value
+  std::string file;
+  int line = 0;
+};
+
 struct ControllerConfig {
   std::map<std::string, std::string> providers;   // representation -> module
   std::map<std::string, std::string> parameters;  // "Module.field" -> text value
+  std::vector<ControllerChange> changes;          // in time order (stable for equal times)
 };
 
 struct SensorSwitches {

@@ -1,5 +1,6 @@
 #include "simulator/scene/scene_parser.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -302,9 +303,42 @@ class Parser {
       } else if (child.name() == "parameter") {
         child.allow_only({"module", "field", "value"});
         cfg.parameters[child.text("module") + "." + child.text("field")] = child.text("value");
+      } else if (child.name() == "at") {
+        timed_changes(child, cfg);
       } else {
-        child.fail("unknown element in <controller> (expected provider or parameter)");
+        child.fail("unknown element in <controller> (expected provider, parameter or at)");
       }
+    }
+    std::stable_sort(cfg.changes.begin(), cfg.changes.end(),
+                     [](const auto& a, const auto& b) { return a.time < b.time; });
+  }
+
+  // <at time="5s"> with <provider> and <parameter> children: applied at the first control frame
+  // at or after that time, in the order written.
+  void timed_changes(const XmlElement& e, ControllerConfig& cfg) {
+    e.allow_only({"time"});
+    const double time = e.number("time", Dimension::Time);
+    if (!(time >= 0)) e.fail_attr("time", "expected a time >= 0");
+    if (!e.raw()->FirstChildElement()) e.fail("expected <provider> or <parameter> inside <at>");
+    for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      XmlElement child(c, e.file());
+      ControllerChange change;
+      change.time = time;
+      change.file = child.file();
+      change.line = child.line();
+      if (child.name() == "provider") {
+        child.allow_only({"representation", "module"});
+        change.kind = ControllerChange::Kind::Provider;
+        change.first = child.text("representation");
+        change.second = child.text("module");
+      } else if (child.name() == "parameter") {
+        child.allow_only({"module", "field", "value"});
+        change.first = child.text("module") + "." + child.text("field");
+        change.second = child.text("value");
+      } else {
+        child.fail("unknown element in <at> (expected provider or parameter)");
+      }
+      cfg.changes.push_back(std::move(change));
     }
   }
 
