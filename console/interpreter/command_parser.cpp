@@ -6,8 +6,27 @@
 #include "robot/core/error.hpp"
 
 namespace stride::console {
+namespace {
 
-Command parse_command(std::string_view line) {
+// Quoted words may hold newlines or control bytes; errors stay one printable line.
+std::string one_line(std::string_view text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char ch : text) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (ch == '\n')
+      out += "\\n";
+    else if (ch == '\t')
+      out += "\\t";
+    else if (u < 0x20 || u == 0x7f)
+      out += std::string("\\x") + kHex[u >> 4] + kHex[u & 15];
+    else
+      out += ch;
+  }
+  return out;
+}
+
+Command parse_checked(std::string_view line) {
   std::vector<std::string> words = tokenize(line);
   if (words.empty()) return {};
   Command c{words.front(), {words.begin() + 1, words.end()}};
@@ -33,6 +52,16 @@ Command parse_command(std::string_view line) {
     }
   }
   return c;
+}
+
+}  // namespace
+
+Command parse_command(std::string_view line) {
+  try {
+    return parse_checked(line);
+  } catch (const Error& e) {
+    throw Error(one_line(e.what()));
+  }
 }
 
 }  // namespace stride::console

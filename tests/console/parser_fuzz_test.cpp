@@ -50,7 +50,8 @@ int parse_all(const std::string& text) {
       if (spec->max_args >= 0) EXPECT_LE(n, spec->max_args) << s;
       ++accepted;
     } catch (const Error& e) {
-      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "multi-line error";
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos)
+          << "multi-line error: " << e.what();
     }
   }
   return accepted;
