@@ -12,6 +12,7 @@ int dyn_main(Args args, std::ostream& out, std::ostream& err);
 int pattern_main(Args args, std::ostream& out, std::ostream& err);
 int experiment_main(Args args, std::ostream& out, std::ostream& err);
 int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
+int swing_leg_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -29,6 +30,10 @@ const std::vector<Subcommand>& subcommands() {
        run_main},
       {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics",
        kin_main},
+      {"swing-leg",
+       "swing-leg planar-step|planar-track|3d-step|3d-track [--controller adaptive|pd|both] "
+       "[--seconds S] [--dt s] [--csv dir] [--plots dir]: Ch. 5 adaptive vs PD swing-leg control",
+       swing_leg_main},
       {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)",
        dyn_main},
       {"pattern",

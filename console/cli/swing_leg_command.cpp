@@ -1,0 +1,152 @@
+// `stride swing-leg <study> [--controller adaptive|pd|both] [--seconds S] [--dt s] [--csv dir]
+// [--plots dir]`: the Ch. 5 swing-leg studies (adaptive vs PD control on the App. C models).
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "behaviours/swing_leg/thesis_runs.hpp"
+#include "console/cli/arguments.hpp"
+#include "console/cli/subcommand.hpp"
+#include "console/plot/gnuplot_plot.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::cli {
+namespace {
+
+using swing_leg::Controller;
+
+std::string controller_name(Controller c) {
+  return c == Controller::Adaptive ? "adaptive" : "pd";
+}
+
+std::string row(const Eigen::VectorXd& v) {
+  std::ostringstream s;
+  s << std::scientific << std::setprecision(2);
+  for (Eigen::Index i = 0; i < v.size(); ++i) s << (i ? " " : "") << v[i];
+  return s.str();
+}
+
+// One CSV per controller: time, desired and actual angles, errors, torques, estimates.
+plot::Table table_of(const swing_leg::TrackingResult& r, swing_leg::LegModel m) {
+  const auto names = swing_leg::joint_names(m);
+  plot::Table t;
+  t.columns.push_back("t");
+  for (const auto& n : names) t.columns.push_back(n + "_desired");
+  for (const auto& n : names) t.columns.push_back(n);
+  for (const auto& n : names) t.columns.push_back(n + "_error");
+  for (const auto& n : names) t.columns.push_back(n + "_torque");
+  for (int i = 0; i < swing_leg::parameter_count(m); ++i)
+    t.columns.push_back("a" + std::to_string(i + 1));
+  t.columns.push_back("lyapunov");
+  for (const auto& s : r.samples) {
+    std::vector<double> v{s.t};
+    for (Eigen::Index i = 0; i < s.q.size(); ++i) v.push_back(s.q_desired[i]);
+    for (Eigen::Index i = 0; i < s.q.size(); ++i) v.push_back(s.q[i]);
+    for (Eigen::Index i = 0; i < s.q.size(); ++i) v.push_back(s.q[i] - s.q_desired[i]);
+    for (Eigen::Index i = 0; i < s.q.size(); ++i) v.push_back(s.tau[i]);
+    for (Eigen::Index i = 0; i < s.a_hat.size(); ++i) v.push_back(s.a_hat[i]);
+    v.push_back(s.lyapunov);
+    t.add_row(std::move(v));
+  }
+  return t;
+}
+
+void render(const std::string& csv, std::vector<plot::Series> series, const std::string& title,
+            const std::string& y_label, const std::string& png) {
+  plot::PlotSpec spec;
+  spec.csv_path = csv;
+  spec.x_column = "t";
+  spec.series = std::move(series);
+  spec.title = title;
+  spec.x_label = "t [s]";
+  spec.y_label = y_label;
+  spec.png_path = png;
+  plot::render_png(spec);
+}
+
+void plots(const std::string& dir, const std::string& stem, const std::string& csv,
+           swing_leg::LegModel m, Controller c) {
+  const auto names = swing_leg::joint_names(m);
+  const std::string who = controller_name(c);
+  const auto series = [&](const std::string& suffix) {
+    std::vector<plot::Series> s;
+    for (const auto& n : names) s.push_back({n + suffix, n + suffix, ""});
+    return s;
+  };
+  std::vector<plot::Series> tracking;
+  for (const auto& n : names) {
+    tracking.push_back({n + "_desired", n + " desired", ""});
+    tracking.push_back({n, n, ""});
+  }
+  render(csv, tracking, stem + " " + who + ": tracking", "angle [rad]",
+         dir + "/" + stem + "_" + who + "_tracking.png");
+  render(csv, series("_error"), stem + " " + who + ": tracking error", "q - q_d [rad]",
+         dir + "/" + stem + "_" + who + "_error.png");
+  render(csv, series("_torque"), stem + " " + who + ": control torque", "tau [N m]",
+         dir + "/" + stem + "_" + who + "_torque.png");
+  if (c != Controller::Adaptive) return;
+  const int p = swing_leg::parameter_count(m);
+  std::vector<plot::Series> inertial, gravitational;
+  for (int i = 1; i <= p; ++i)
+    (i > p - 3 ? gravitational : inertial).push_back({"a" + std::to_string(i), "", ""});
+  render(csv, inertial, stem + ": inertial parameter estimates", "",
+         dir + "/" + stem + "_inertial_estimates.png");
+  render(csv, gravitational, stem + ": gravitational parameter estimates", "",
+         dir + "/" + stem + "_gravitational_estimates.png");
+}
+
+}  // namespace
+
+int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
+  try {
+    ArgumentReader a(args, "swing-leg");
+    swing_leg::ThesisRun run = swing_leg::thesis_run(a.positional("study"));
+    const std::string which = a.text_or("--controller", "both");
+    if (which != "adaptive" && which != "pd" && which != "both")
+      throw Error("stride swing-leg: --controller: expected adaptive, pd or both");
+    run.options.duration = a.number_or("--seconds", run.options.duration);
+    run.options.dt = a.number_or("--dt", run.options.dt);
+    const std::string csv_dir = a.text_or("--csv", "");
+    const std::string plot_dir = a.text_or("--plots", "");
+    a.finish();
+    for (const auto& d : {csv_dir, plot_dir})
+      if (!d.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(d, ec);
+        if (ec) throw Error("stride swing-leg: cannot create directory '" + d + "'");
+      }
+
+    const auto m = run.options.model;
+    out << "swing-leg " << run.name << " (" << run.figures << "), " << run.options.duration
+        << " s, dt " << run.options.dt * 1000 << " ms, lambda " << run.options.lambda << ", K_D "
+        << run.options.kd << "\n";
+    out << "joints: ";
+    for (const auto& n : swing_leg::joint_names(m)) out << n << " ";
+    out << "\n";
+    for (Controller c : {Controller::Adaptive, Controller::Pd}) {
+      if (which != "both" && which != controller_name(c)) continue;
+      run.options.controller = c;
+      const swing_leg::TrackingResult r = swing_leg::simulate_tracking(run.options, run.reference);
+      out << std::left << std::setw(9) << controller_name(c) << " rms error [rad] "
+          << row(r.rms_error) << "  last fifth " << row(r.late_rms_error) << "  max "
+          << row(r.max_error) << "  max |tau| " << std::fixed << std::setprecision(1)
+          << r.max_torque << " N m\n";
+      if (c == Controller::Adaptive)
+        out << "          a (true)  " << row(r.true_parameters) << "\n"
+            << "          a^ (end)  " << row(r.final_estimate) << "\n";
+      const std::string stem = run.name;
+      const std::string dir = !csv_dir.empty() ? csv_dir : plot_dir;
+      if (dir.empty()) continue;
+      const std::string csv = dir + "/" + stem + "_" + controller_name(c) + ".csv";
+      plot::write_csv(csv, table_of(r, m));
+      if (!plot_dir.empty() && !plot::png_terminal().empty()) plots(plot_dir, stem, csv, m, c);
+    }
+    return 0;
+  } catch (const Error& e) {
+    err << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace stride::cli
