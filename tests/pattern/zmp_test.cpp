@@ -85,5 +85,36 @@ TEST(ZmpInSupportPolygon, Table4_3PatternsKeepTheZmpBetweenTheSoles) {
   }
 }
 
+// Why no reading of A_l or of the sole fixes that: with tau_dsp = 1 % the cosine sway (Eq. 3.9)
+// crosses the walking line in the middle of the 2.5 ms double support, so every single support
+// starts with the ZMP (Eq. 3.16) only about 0.09 A_l off the line. Reaching even a sole centred
+// under the ankle (inner edge d_0 - 45.5 mm = 4.5 mm) there takes A_l >= 48 mm, whose
+// mid-support ZMP (about 6.6 A_l) lies beyond the sole's outer edge (101 mm).
+TEST(ZmpInSupportPolygon, Table4_3TimingAllowsNoSwayThatKeepsTheZmpOnTheSupportSole) {
+  for (const char* name : {"slow", "medium", "fast"}) {
+    const StretchedKneePattern w(preset(name));
+    const PatternParameters& p = w.parameters();
+    const double A_s = 0.5 * (p.z_max - p.z_min), k = std::numbers::pi / p.T_s();
+    // Start of single support: z = z_min with z'' = A_s k^2 (Eq. 3.10), y from Eq. 3.9.
+    const double start_per_A_l =
+        std::abs(std::cos(std::numbers::pi * p.T_d() / p.T_step())) *
+        (1.0 + p.omega() * p.omega() * p.z_min / (p.gravity + A_s * k * k));
+    for (int j = p.development_steps() + 1; j < p.steps - p.decay_steps() - 1; ++j) {
+      // 1 ns into the single support, on Eq. 3.10's rising branch (z'' jumps at T_d).
+      const PatternSample s = w.sample(j * p.T_step() + p.T_d() + 1e-9);
+      ASSERT_NE(s.support, SupportPhase::kDouble) << name << " j = " << j;
+      EXPECT_NEAR(std::abs(s.zmp.y()), p.A_l * start_per_A_l, 1e-10) << name << " j = " << j;
+      EXPECT_LT(zmp_margin(s), -0.009) << name << " j = " << j;  // the sole's edge is 10.1 mm off
+    }
+    const double centred_inner = p.d_0 - 0.5 * nao::kSoleWidth;  // 4.5 mm from the line
+    const double outer = p.d_0 + 0.5 * nao::kSoleWidth + nao::kSoleCentreYLeft;  // 101.1 mm
+    const double least_A_l = centred_inner / start_per_A_l;
+    const double most_A_l = outer / (mid_support_zmp_y(p) / p.A_l);
+    EXPECT_GT(start_per_A_l, 0.0) << name;
+    EXPECT_LT(start_per_A_l, 0.11) << name;
+    EXPECT_GT(least_A_l, most_A_l) << name << ": A_l from " << least_A_l << " to " << most_A_l;
+  }
+}
+
 }  // namespace
 }  // namespace stride::walking
