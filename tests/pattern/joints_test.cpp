@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "behaviours/walking/pattern/pattern_joints.hpp"
 #include "robot/nao/nao_dimensions.hpp"
@@ -82,6 +83,43 @@ TEST(LegJoints, StretchedKneePatternStretchesConventionalStaysBent) {
     p.H_foot = 0.02;
     EXPECT_GT(smallest_knees(sample_walk(ConventionalPattern(p), 0.01)).second, 0.65) << name;
   }
+}
+
+// Peak knee speed by finite differences: over the rhythmic steps and over the whole walk.
+struct KneeSpeeds {
+  double rhythmic = 0, whole = 0;
+};
+KneeSpeeds peak_knee_speeds(const char* name) {
+  const StretchedKneePattern w(preset(name));
+  const PatternParameters& p = w.parameters();
+  const double from = (p.development_steps() + 1) * p.T_step();
+  const double to = (p.steps - p.decay_steps() - 1) * p.T_step();
+  constexpr double dt = 0.002;
+  KneeSpeeds peak;
+  double previous = leg_joints(w.sample(0)).left[3];
+  for (double t = dt; t <= w.duration(); t += dt) {
+    const double knee = leg_joints(w.sample(t)).left[3];
+    const double speed = std::abs(knee - previous) / dt;
+    peak.whole = std::max(peak.whole, speed);
+    if (t > from && t < to) peak.rhythmic = std::max(peak.rhythmic, speed);
+    previous = knee;
+  }
+  return peak;
+}
+
+// Sec. 4.3.4.2 lowers the waist as the speed rises. The straighter support legs of the slower
+// settings need more knee travel to lift the swing foot H_foot within T_ssp: slow and medium ask
+// for more than the NAO knee motor's no-load speed (399 deg/s, nao-facts.md), fast for less. The
+// half-length first and last swings lift the foot as high in half the time.
+TEST(LegJoints, KneeSpeedOfTheTable4_3SettingsFallsWithTheWaistHeight) {
+  const double motor_no_load = 399.0 * std::numbers::pi / 180.0;
+  const KneeSpeeds slow = peak_knee_speeds("slow"), medium = peak_knee_speeds("medium"),
+                   fast = peak_knee_speeds("fast");
+  EXPECT_GT(slow.rhythmic, medium.rhythmic);
+  EXPECT_GT(medium.rhythmic, fast.rhythmic);
+  EXPECT_GT(medium.rhythmic, motor_no_load) << medium.rhythmic;
+  EXPECT_LT(fast.rhythmic, motor_no_load) << fast.rhythmic;
+  for (const KneeSpeeds& k : {slow, medium, fast}) EXPECT_GT(k.whole, 1.8 * k.rhythmic);
 }
 
 }  // namespace
