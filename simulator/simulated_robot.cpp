@@ -49,6 +49,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
   try {
     model_ = std::make_unique<model::RobotModel>(model::load_urdf(placement.urdf));
     if (!placement.devices.empty()) devices_ = load_device_file(placement.devices);
+    if (placement.period > 0) devices_.period = placement.period;  // the scene's choice wins
   } catch (const Error& e) {
     throw error_at(placement.file, placement.line,
                    "<robot name=\"" + placement.name + "\">: " + e.what());
@@ -207,6 +208,11 @@ bool SimulatedRobot::fallen() const {
   const TorsoPose p = torso_pose();
   return std::abs(p.roll) > placement_.fall_tilt || std::abs(p.pitch) > placement_.fall_tilt ||
          p.z < placement_.fall_height;
+}
+
+double SimulatedRobot::max_joint_torque(int joint) const {
+  const int servo = servos_->servo_of_joint(joint);
+  return servo < 0 ? 0.0 : servos_->stall_torque(servo);
 }
 
 }  // namespace stride::sim

@@ -50,6 +50,8 @@ class SimulatedRobot : public hal::HardwareLink {
   SensorSwitches& sensor_switches() { return switches_; }
 
   TorsoPose torso_pose() const;
+  // Stall torque of the servo on model joint `joint` (N m); 0 for a joint without a servo.
+  double max_joint_torque(int joint) const;
   bool fallen() const;
   // Model joint index of each LoLA joint, or -1 (hands).
   int joint_of_lola(int lola) const { return lola_to_joint_[lola]; }

@@ -32,7 +32,8 @@ const std::vector<Subcommand>& subcommands() {
        kin_main},
       {"swing-leg",
        "swing-leg planar-step|planar-track|3d-step|3d-track [--controller adaptive|pd|both] "
-       "[--seconds S] [--dt s] [--csv dir] [--plots dir]: Ch. 5 adaptive vs PD swing-leg control",
+       "[--seconds S] [--dt s] [--csv dir] [--plots dir] | swing-leg ode-track [--scene f] "
+       "[--seconds S] [--preset P]: Ch. 5 adaptive vs PD swing-leg control",
        swing_leg_main},
       {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)",
        dyn_main},

@@ -1,5 +1,6 @@
 // `stride swing-leg <study> [--controller adaptive|pd|both] [--seconds S] [--dt s] [--csv dir]
-// [--plots dir]`: the Ch. 5 swing-leg studies (adaptive vs PD control on the App. C models).
+// [--plots dir]`: the Ch. 5 swing-leg studies (adaptive vs PD control on the App. C models), and
+// `stride swing-leg ode-track [--scene f] [--seconds S] [--preset P]` on the simulated NAO.
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
@@ -8,6 +9,7 @@
 #include "behaviours/swing_leg/thesis_runs.hpp"
 #include "console/cli/arguments.hpp"
 #include "console/cli/subcommand.hpp"
+#include "console/experiments/swing_leg_ode_study.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
 
@@ -96,12 +98,44 @@ void plots(const std::string& dir, const std::string& stem, const std::string& c
          dir + "/" + stem + "_gravitational_estimates.png");
 }
 
+// Sec. 5.4.2: both laws on the simulated NAO over a grid of gains a 1 kHz torque loop allows.
+int ode_track(ArgumentReader& a, std::ostream& out) {
+  experiments::OdeSwingLegOptions o;
+  o.scene = a.text_or("--scene", "scenes/swing_leg/hanging_nao.xml");
+  o.duration = a.number_or("--seconds", 10);
+  o.preset = a.text_or("--preset", "medium");
+  const double gamma_scale = a.number_or("--gamma-scale", 1.0);
+  if (!(gamma_scale > 0)) throw Error("stride swing-leg: --gamma-scale: expected > 0");
+  o.gamma = experiments::thesis_ode_gamma() * gamma_scale;
+  a.finish();
+  out << "swing-leg ode-track (Sec. 5.4.2, Figs. 5.13-5.14): " << o.scene << ", left leg in torque "
+      << "mode tracking the '" << o.preset << "' pattern for " << o.duration
+      << " s at 1 kHz, errors after 1 s, Gamma = " << gamma_scale << " x the thesis' Sec. 5.4.2\n";
+  out << "lambda  K_D   controller  rms error [rad] (hip roll .. ankle roll)        max |tau|  "
+         "beyond stall\n";
+  const std::pair<double, double> grid[] = {{10, 0.05}, {20, 0.1}, {40, 0.1}, {20, 0.2}};
+  for (const auto& [lambda, kd] : grid)
+    for (Controller c : {Controller::Adaptive, Controller::Pd}) {
+      o.lambda = lambda;
+      o.kd = kd;
+      o.controller = c;
+      const auto r = experiments::run_ode_swing_leg(o);
+      out << std::fixed << std::setprecision(2) << std::setw(6) << lambda << "  " << kd << "  "
+          << std::left << std::setw(10) << controller_name(c) << std::right << "  "
+          << row(r.rms_error) << "  " << std::fixed << std::setprecision(2) << r.max_torque
+          << " N m  " << std::setprecision(1) << 100 * r.saturated << " %\n";
+    }
+  return 0;
+}
+
 }  // namespace
 
 int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentReader a(args, "swing-leg");
-    swing_leg::ThesisRun run = swing_leg::thesis_run(a.positional("study"));
+    const std::string study = a.positional("study");
+    if (study == "ode-track") return ode_track(a, out);
+    swing_leg::ThesisRun run = swing_leg::thesis_run(study);
     const std::string which = a.text_or("--controller", "both");
     if (which != "adaptive" && which != "pd" && which != "both")
       throw Error("stride swing-leg: --controller: expected adaptive, pd or both");

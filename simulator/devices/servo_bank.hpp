@@ -26,6 +26,8 @@ class ServoBank {
   int joint(int servo) const { return joints_[servo]; }
   ServoCommand& command(int servo) { return commands_[servo]; }
   const ServoCommand& command(int servo) const { return commands_[servo]; }
+  // The motor's stall torque at the joint (N m), the most a servo ever applies.
+  double stall_torque(int servo) const { return motors_[servo]->stall_torque; }
 
   // Before each physics step: set the ODE motors / torques from the commands.
   void apply(const RobotBody& body);

@@ -82,6 +82,7 @@ struct RobotPlacement {
   int joints_line = 0;
   bool fixed_base = false;  // weld the root link to the world (test rigs, swing-leg studies)
   double stiffness = 1.0;   // servo stiffness held until a controller commands otherwise
+  double period = 0;        // s; control period overriding the device file's (0: keep it)
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;

@@ -239,7 +239,7 @@ class Parser {
 
   void robot(const XmlElement& e) {
     e.allow_only({"name", "urdf", "devices", "xyz", "rpy", "fixed", "stiffness", "fall_tilt",
-                  "fall_height"});
+                  "fall_height", "period"});
     RobotPlacement r;
     r.file = e.file();
     r.line = e.line();
@@ -268,6 +268,7 @@ class Parser {
     r.fixed_base = e.boolean_or("fixed", false);
     r.stiffness = e.number_or("stiffness", 1.0);
     if (r.stiffness < 0 || r.stiffness > 1) e.fail_attr("stiffness", "expected a value in [0, 1]");
+    if (e.has("period")) r.period = positive(e, "period", 0.01, Dimension::Time);
     r.fall_tilt = positive(e, "fall_tilt", r.fall_tilt, Dimension::Angle);
     r.fall_height = non_negative(e, "fall_height", r.fall_height, Dimension::Length);
     for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
