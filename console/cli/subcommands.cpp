@@ -13,6 +13,7 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err);
 int experiment_main(Args args, std::ostream& out, std::ostream& err);
 int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 int swing_leg_main(Args args, std::ostream& out, std::ostream& err);
+int landing_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -35,6 +36,12 @@ const std::vector<Subcommand>& subcommands() {
        "[--seconds S] [--dt s] [--csv dir] [--plots dir] | swing-leg ode-track [--scene f] "
        "[--seconds S] [--preset P]: Ch. 5 adaptive vs PD swing-leg control",
        swing_leg_main},
+      {"landing",
+       "landing [--scene f] [--speed m/s] [--depth m] [--seconds S] [--kz N/m] [--bz N s/m] [--csv "
+       "f]: "
+       "Ch. 6 "
+       "landing impact, position control vs the impedance law",
+       landing_main},
       {"dyn", "dyn params --model planar|3d [--json]: swing-leg parameter vector (App. C)",
        dyn_main},
       {"pattern",

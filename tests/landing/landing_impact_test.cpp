@@ -1,0 +1,41 @@
+// Ch. 6 in simulation: a sole set down on a floor 10 mm higher than planned. The position-
+// controlled leg drives into it up to its motors' limits; under the impedance law (Eq. 6.17) the
+// floor carries K_z times the shortfall, as a spring would.
+#include <gtest/gtest.h>
+
+#include "console/experiments/landing_impact_study.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::experiments {
+namespace {
+
+LandingOptions options(bool impedance) {
+  LandingOptions o;
+  o.scene = STRIDE_SOURCE_DIR "/scenes/landing/landing_nao.xml";
+  o.impedance = impedance;
+  o.depth = 0.01;
+  return o;
+}
+
+TEST(LandingImpact, ImpedanceLawTurnsAnEarlyFloorIntoASpringForce) {
+  const LandingResult position = run_landing(options(false));
+  const LandingResult impedance = run_landing(options(true));
+  ASSERT_GT(position.touchdown, 0.0);
+  ASSERT_GT(impedance.touchdown, 0.0);
+  const double kz = options(true).stiffness.z();
+  EXPECT_NEAR(impedance.final_force, kz * 0.01, 0.25 * kz * 0.01);
+  EXPECT_GT(position.final_force, 20 * impedance.final_force);
+  EXPECT_LT(impedance.peak_force, position.peak_force / 5);
+}
+
+TEST(LandingImpact, RefusesAFloatingRobotAndBadPlans) {
+  LandingOptions o = options(true);
+  o.scene = STRIDE_SOURCE_DIR "/scenes/nao_stand.xml";
+  EXPECT_THROW(run_landing(o), Error);
+  o = options(true);
+  o.speed = -1;
+  EXPECT_THROW(run_landing(o), Error);
+}
+
+}  // namespace
+}  // namespace stride::experiments
