@@ -22,16 +22,23 @@ struct CosSin {
   double c = 1, s = 0;
 };
 
+// atan(t) = t within rounding below this |t| (t^3 / 3 under half an ulp of t).
+constexpr double kAtanLinear = 0x1p-27;
+
+double atan_of_ratio(double t) {
+  return std::abs(t) < kAtanLinear ? t : std::atan(t);
+}
+
 // atan2 through atan of the smaller over the larger coordinate, within an ulp or two of
 // std::atan2: glibc's atan takes about 40% of its atan2's time.
 double atan2_fast(double y, double x) {
   const double ax = std::abs(x), ay = std::abs(y);
   if (!(ax > 0 || ay > 0) || std::isinf(ax) || std::isinf(ay)) return std::atan2(y, x);
   if (ay <= ax) {
-    const double a = std::atan(y / x);
+    const double a = atan_of_ratio(y / x);
     return x > 0 ? a : a + std::copysign(std::numbers::pi, y);
   }
-  return std::copysign(std::numbers::pi / 2, y) - std::atan(x / y);
+  return std::copysign(std::numbers::pi / 2, y) - atan_of_ratio(x / y);
 }
 
 // The unit direction of (x, y): cos and sin of atan2(y, x) without evaluating the angle.
@@ -50,36 +57,55 @@ CosSin negated(CosSin a) {
   return {a.c, -a.s};
 }
 
-// Elementary rotations applied in place: rows for a rotation on the left, columns on the right.
-template <class M>
-void rx_times(CosSin a, M& m) {  // m <- Rx(a) m
-  for (int j = 0; j < m.cols(); ++j) {
-    const double r1 = m(1, j), r2 = m(2, j);
-    m(1, j) = a.c * r1 - a.s * r2;
-    m(2, j) = a.s * r1 + a.c * r2;
+// Three rows of N scalars (a 3x3 matrix or a column vector), small enough to stay in registers.
+template <int N>
+struct Rows {
+  double a[3][N];
+};
+using Mat3 = Rows<3>;
+using Vec3 = Rows<1>;
+Mat3 to_mat3(const Eigen::Matrix3d& m) {
+  return {{{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}}};
+}
+Vec3 to_vec3(const Eigen::Vector3d& v) {
+  return {{{v.x()}, {v.y()}, {v.z()}}};
+}
+
+// Elementary rotations: rows for a rotation on the left, columns on the right.
+template <int N>
+void rotate_rows(CosSin r, double (&first)[N],
+                 double (&second)[N]) {  // (first, second) <- R (first, second)
+  for (int j = 0; j < N; ++j) {
+    const double u = first[j], v = second[j];
+    first[j] = r.c * u - r.s * v;
+    second[j] = r.s * u + r.c * v;
   }
 }
-template <class M>
-void ry_times(CosSin a, M& m) {  // m <- Ry(a) m
-  for (int j = 0; j < m.cols(); ++j) {
-    const double r0 = m(0, j), r2 = m(2, j);
-    m(0, j) = a.c * r0 + a.s * r2;
-    m(2, j) = a.c * r2 - a.s * r0;
-  }
+template <int N>
+Rows<N> rx_times(CosSin r, Rows<N> m) {  // Rx(r) m
+  rotate_rows(r, m.a[1], m.a[2]);
+  return m;
 }
-void times_rx(Eigen::Matrix3d& m, CosSin a) {  // m <- m Rx(a)
+template <int N>
+Rows<N> ry_times(CosSin r, Rows<N> m) {  // Ry(r) m: z' = c z - s x, x' = c x + s z
+  rotate_rows(r, m.a[2], m.a[0]);
+  return m;
+}
+Mat3 times_rx(Mat3 m, CosSin r) {  // m Rx(r)
   for (int i = 0; i < 3; ++i) {
-    const double c1 = m(i, 1), c2 = m(i, 2);
-    m(i, 1) = a.c * c1 + a.s * c2;
-    m(i, 2) = a.c * c2 - a.s * c1;
+    const double c1 = m.a[i][1], c2 = m.a[i][2];
+    m.a[i][1] = r.c * c1 + r.s * c2;
+    m.a[i][2] = r.c * c2 - r.s * c1;
   }
+  return m;
 }
-void times_ry(Eigen::Matrix3d& m, CosSin a) {  // m <- m Ry(a)
+Mat3 times_ry(Mat3 m, CosSin r) {  // m Ry(r)
   for (int i = 0; i < 3; ++i) {
-    const double c0 = m(i, 0), c2 = m(i, 2);
-    m(i, 0) = a.c * c0 - a.s * c2;
-    m(i, 2) = a.s * c0 + a.c * c2;
+    const double c0 = m.a[i][0], c2 = m.a[i][2];
+    m.a[i][0] = r.c * c0 - r.s * c2;
+    m.a[i][2] = r.s * c0 + r.c * c2;
   }
+  return m;
 }
 
 // Rx(s pi/4): the yaw-pitch axis (0, 1, -s)/sqrt(2) is the y axis rolled by -s*45 degrees, so
@@ -89,11 +115,9 @@ CosSin x45(double s) {
 }
 
 // Yaw-pitch rotation transposed, applied on the left: m <- (Rx(-s pi/4) Ry(q) Rx(s pi/4))^T m.
-template <class M>
-void hip_yaw_pitch_inverse_times(double s, CosSin q, M& m) {
-  rx_times(x45(s), m);
-  ry_times(negated(q), m);
-  rx_times(x45(-s), m);
+template <int N>
+Rows<N> hip_yaw_pitch_inverse_times(double s, CosSin q, const Rows<N>& m) {
+  return rx_times(x45(-s), ry_times(negated(q), rx_times(x45(s), m)));
 }
 
 // Ankle in the hip frame: the sole origin raised by the foot height along the sole's z axis.
@@ -133,9 +157,9 @@ Knee knee_of(const Eigen::Vector3d& hip_ankle, const LegIkResult& r) {
 }
 
 // Angle of a rotation matrix from its skew part (2 sin) and trace (1 + 2 cos); accurate near 0.
-double rotation_angle(const Eigen::Matrix3d& m) {
-  const Eigen::Vector3d skew(m(2, 1) - m(1, 2), m(0, 2) - m(2, 0), m(1, 0) - m(0, 1));
-  return atan2_fast(skew.norm(), m.trace() - 1);
+double rotation_angle(const Mat3& m) {
+  const double x = m.a[2][1] - m.a[1][2], y = m.a[0][2] - m.a[2][0], z = m.a[1][0] - m.a[0][1];
+  return atan2_fast(std::sqrt(x * x + y * y + z * z), m.a[0][0] + m.a[1][1] + m.a[2][2] - 1);
 }
 
 // Full solution; also hands out cos and sin of HipYawPitch for the other leg.
@@ -157,15 +181,14 @@ LegIkResult solve_leg(Side side, const Eigen::Isometry3d& sole_in_torso, CosSin&
   const CosSin pitch = direction(pitch_c, pitch_s);
   // Remaining hip rotation: Rx(s pi/4) R_hip = Ry(yaw-pitch) Rx(s pi/4 + roll) Ry(pitch).
   const double s = side_sign(side);
-  Eigen::Matrix3d m = foot;
-  times_rx(m, negated(roll));
-  times_ry(m, negated(sum(knee.cs, pitch)));
-  rx_times(x45(s), m);
-  const double b = atan2_fast(s * std::sqrt(m(1, 0) * m(1, 0) + m(1, 2) * m(1, 2)), m(1, 1));
-  r.q[0] = atan2_fast(s * m(0, 1), s * m(2, 1));
-  yaw_pitch = direction(s * m(2, 1), s * m(0, 1));
+  const Mat3 m = rx_times(
+      x45(s), times_ry(times_rx(to_mat3(foot), negated(roll)), negated(sum(knee.cs, pitch))));
+  const double m10 = m.a[1][0], m12 = m.a[1][2];
+  const double b = atan2_fast(s * std::sqrt(m10 * m10 + m12 * m12), m.a[1][1]);
+  r.q[0] = atan2_fast(s * m.a[0][1], s * m.a[2][1]);
+  yaw_pitch = direction(s * m.a[2][1], s * m.a[0][1]);
   r.q[1] = b - s * std::numbers::pi / 4;  // b in [0, pi] (left) or [-pi, 0]: within (-pi, pi)
-  r.q[2] = atan2_fast(s * m(1, 0), -s * m(1, 2));
+  r.q[2] = atan2_fast(s * m10, -s * m12);
   r.q[3] = knee.q;
   r.q[4] = atan2_fast(pitch_s, pitch_c);
   r.q[5] = atan2_fast(up * hip.y(), up * hip.z());
@@ -176,8 +199,9 @@ LegIkResult solve_leg_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sol
                                          double hip_yaw_pitch, CosSin yaw_pitch) {
   LegIkResult r;
   const double s = side_sign(side);
-  Eigen::Vector3d p = ankle_in_hip(side, sole_in_torso);
-  hip_yaw_pitch_inverse_times(s, yaw_pitch, p);  // = Rx(roll) * (sagittal leg vector)
+  const Vec3 v =
+      hip_yaw_pitch_inverse_times(s, yaw_pitch, to_vec3(ankle_in_hip(side, sole_in_torso)));
+  Eigen::Vector3d p(v.a[0][0], v.a[1][0], v.a[2][0]);  // = Rx(roll) * (sagittal leg vector)
   clamp_to_workspace(p, r);
   const Knee knee = knee_of(p, r);
   const double down = p.z() <= 0 ? 1.0 : -1.0;  // hip roll on the branch |roll| <= pi/2
@@ -188,19 +212,22 @@ LegIkResult solve_leg_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sol
   const double pitch_c = uz * wz + ux * wx, pitch_s = ux * wz - uz * wx;
   const CosSin pitch = direction(pitch_c, pitch_s);
   // Ankle pitch and roll: nearest Ry * Rx factorisation of the remaining rotation.
-  Eigen::Matrix3d rest = sole_in_torso.linear();  // (R_yaw-pitch Rx(roll) Ry(pitch + knee))^T R
-  hip_yaw_pitch_inverse_times(s, yaw_pitch, rest);
-  rx_times(negated(roll), rest);
-  ry_times(negated(sum(pitch, knee.cs)), rest);
-  const CosSin ankle_pitch = direction(rest(0, 0), -rest(2, 0));
-  const CosSin ankle_roll = direction(rest(1, 1), -rest(1, 2));
-  r.q = {
-      hip_yaw_pitch, atan2_fast(down * p.y(), -down * p.z()), atan2_fast(pitch_s, pitch_c),
-      knee.q,        atan2_fast(-rest(2, 0), rest(0, 0)),     atan2_fast(-rest(1, 2), rest(1, 1))};
-  Eigen::Matrix3d reached_to_wanted = rest;  // (Ry(ankle pitch) Rx(ankle roll))^T rest
-  ry_times(negated(ankle_pitch), reached_to_wanted);
-  rx_times(negated(ankle_roll), reached_to_wanted);
-  r.orientation_error = rotation_angle(reached_to_wanted);
+  // (R_yaw-pitch Rx(roll) Ry(pitch + knee))^T R
+  const Mat3 rest = ry_times(
+      negated(sum(pitch, knee.cs)),
+      rx_times(negated(roll),
+               hip_yaw_pitch_inverse_times(s, yaw_pitch, to_mat3(sole_in_torso.linear()))));
+  const CosSin ankle_pitch = direction(rest.a[0][0], -rest.a[2][0]);
+  const CosSin ankle_roll = direction(rest.a[1][1], -rest.a[1][2]);
+  r.q = {hip_yaw_pitch,
+         atan2_fast(down * p.y(), -down * p.z()),
+         atan2_fast(pitch_s, pitch_c),
+         knee.q,
+         atan2_fast(-rest.a[2][0], rest.a[0][0]),
+         atan2_fast(-rest.a[1][2], rest.a[1][1])};
+  // (Ry(ankle pitch) Rx(ankle roll))^T rest: the rotation the ankle cannot reach.
+  r.orientation_error =
+      rotation_angle(rx_times(negated(ankle_roll), ry_times(negated(ankle_pitch), rest)));
   return r;
 }
 
