@@ -2,12 +2,15 @@
 // Torso pitch/roll PD correction of the walking joint targets (thesis Sec. 4.3.3): the same PD
 // law drives either the hip joints (hip strategy) or the ankle joints (ankle strategy).
 //
-// Sign convention. The thesis writes the correction with the error desired - measured and
-// positive K_p. In the robot's convention (torso pitch > 0 leans forward, roll > 0 leans right;
-// every pitch axis along +y and every roll axis along +x), with the feet flat the torso angle is
-// minus the sum of the leg's joint angles about that axis (hip + knee + ankle pitch, or hip +
-// ankle roll). A forward lean is therefore undone by increasing hip or ankle pitch, so the thesis'
-// correction enters the joints negated: q_mod = q_ref - Delta (kJointSignOfCorrection).
+// Sign convention. Our joint signs are NAOqi's, which the thesis' App. B kinematics uses too; its
+// IMU signs are not printed and are read as NAOqi's, also ours (torso pitch > 0 leans forward,
+// roll > 0 leans right, gyro = time derivative of those angles). So the corrections enter the
+// joints as printed, q_mod = q_ref + Delta, with the thesis' gains K_p > 0, K_d < 0. Read in these
+// signs, the P term turns the hip (or ankle) with the lean (over a flat foot a forward lean tilts
+// the torso further forward by K_p * pitch: the hip bends into the fall and the ankle levels a
+// rolling foot), and the D term opposes the lean's rate. The opposite reading (q_mod = q_ref -
+// Delta, "push the torso upright") made the printed K_d anti-damp and, with the ankle, fell in 17
+// of 18 walks (K_p = 0.30, 3 speeds x 2 K_d x 3 seeds).
 #include <array>
 
 #include <Eigen/Core>
@@ -16,7 +19,7 @@
 
 namespace stride::behaviours {
 
-inline constexpr double kJointSignOfCorrection = -1.0;
+inline constexpr double kJointSignOfCorrection = 1.0;  // Eqs. 4.10-4.11, 4.14-4.15
 
 struct PostureGains {
   double kp_pitch = 0;  // K_p1
@@ -33,7 +36,7 @@ Eigen::Vector2d posture_correction(const PostureGains& gains, const Eigen::Vecto
 enum class PostureJoints { Hip, Ankle };
 
 // Eqs. 4.10-4.11 (hip) or 4.14-4.15 (ankle): adds the correction to both legs' pitch and roll
-// joints of `position` (LoLA order), in the robot's sign (see above).
+// joints of `position` (LoLA order).
 void apply_posture_correction(PostureJoints joints, const Eigen::Vector2d& correction,
                               std::array<double, hal::kNumJoints>& position);
 

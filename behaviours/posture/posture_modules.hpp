@@ -37,10 +37,11 @@ struct TorsoStateEstimatorParameters {
   }
 };
 
-// PD gains on the torso error (thesis sign, Eqs. 4.8-4.9 / 4.12-4.13) and the desired torso
-// inclination; desired rates are zero. Defaults: hip strategy as in Figs. 4.7-4.8 (K_p = 0.40,
-// K_d = -0.05), ankle strategy as in Figs. 4.11-4.12 (K_p = 0.28, K_d = -0.06); the thesis gives
-// one pair per strategy, used here for pitch and roll alike.
+// PD gains on the torso error and the desired torso inclination; desired rates are zero.
+// Defaults: the thesis' printed gains in its own signs, which are ours (posture_correction.hpp):
+// hip strategy as in Figs. 4.7-4.8 (K_p = 0.40, K_d = -0.05), ankle strategy as in
+// Figs. 4.11-4.12 (K_p = 0.28, K_d = -0.06); the thesis gives one pair per strategy, used here
+// for pitch (K_p1, K_d1) and roll (K_p2, K_d2) alike.
 template <PostureJoints Joints>
 struct PostureStrategyParameters {
   static constexpr bool kHip = Joints == PostureJoints::Hip;

@@ -12,10 +12,10 @@ const std::vector<FastWalkSetting>& fast_walk_settings() {
   // Sec. 4.3.4.2: faster walks need a lower waist; Sec. 4.4: and the arms against the yaw
   // moment (without arm swing the 0.28 m/s walks here fell).
   static const std::vector<FastWalkSetting> settings = {
-      {0.50, 0.313, 0.315, 0.026, 0.40, 0.05, 1},
-      {0.44, 0.305, 0.307, 0.026, 0.40, 0.05, 1},
-      {0.40, 0.300, 0.302, 0.026, 0.40, 0.05, 1},
-      {0.36, 0.300, 0.302, 0.026, 0.40, 0.05, 1},
+      {0.50, 0.313, 0.315, 0.026, 0.40, -0.05, 1},
+      {0.44, 0.305, 0.307, 0.026, 0.40, -0.05, 1},
+      {0.40, 0.300, 0.302, 0.026, 0.40, -0.05, 1},
+      {0.36, 0.300, 0.302, 0.026, 0.40, -0.05, 1},
   };
   return settings;
 }

@@ -107,8 +107,11 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
                       fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
                       c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
                       fixed(c.thesis_step, 4)});
+      if (files) {
+        const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
+        plot::write_csv(o.out_dir + "/posture_" + c.scene + suffix + "_trace.csv", r.trace);
+      }
       if (files && seed == 1) {
-        plot::write_csv(o.out_dir + "/posture_" + c.scene + "_trace.csv", r.trace);
         write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
                            c.scene.rfind("ankle", 0) == 0);
       }

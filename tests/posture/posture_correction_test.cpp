@@ -47,9 +47,10 @@ TEST(PostureCorrection, PdLawOfTheThesisWithItsGains) {
   EXPECT_NEAR(d[1], 0.28 * 0.05 + -0.06 * -0.4, 1e-15);  // Eq. 4.13
 }
 
-// A lean is answered by a joint change that tilts the torso back over the flat feet, by
-// exactly the correction angle, with either strategy and on both legs.
-TEST(PostureCorrection, ForwardAndSidewaysLeansAreCorrectedOnBothLegs) {
+// Eqs. 4.10-4.11 / 4.14-4.15 in the thesis' (= our NAOqi) signs: with K_p > 0 a lean turns the
+// chosen joints so that, over a flat foot, the torso tilts on by exactly K_p times the lean, on
+// both legs and with either strategy.
+TEST(PostureCorrection, LeansTurnTheJointsAsPrintedOnBothLegs) {
   const auto reference = stand_posture(StandParameters{});
   for (const PostureJoints joints : {PostureJoints::Hip, PostureJoints::Ankle}) {
     const PostureGains gains = joints == PostureJoints::Hip ? HipStrategyParameters{}.gains()
@@ -58,19 +59,19 @@ TEST(PostureCorrection, ForwardAndSidewaysLeansAreCorrectedOnBothLegs) {
     for (const Eigen::Vector4d& lean :
          {Eigen::Vector4d(0.1, 0, 0, 0), Eigen::Vector4d(0, 0.06, 0, 0)}) {
       const Eigen::Vector2d d = posture_correction(gains, Eigen::Vector4d::Zero(), lean);
-      EXPECT_LE(d[0], 0);  // thesis sign: desired - measured
+      EXPECT_LE(d[0], 0);  // desired - measured, K_p > 0
       EXPECT_LE(d[1], 0);
       auto q = reference;
       apply_posture_correction(joints, d, q);
       const bool hip = joints == PostureJoints::Hip;
       const JointId moved = lean[0] != 0 ? (hip ? JointId::LHipPitch : JointId::LAnklePitch)
                                          : (hip ? JointId::RHipRoll : JointId::RAnkleRoll);
-      EXPECT_GT(q[index(moved)], reference[index(moved)]);  // the angle that tilts the torso back
+      EXPECT_NEAR(q[index(moved)] - reference[index(moved)], d[lean[0] != 0 ? 0 : 1], 1e-15);
       for (const model::Side side : {model::Side::Left, model::Side::Right}) {
         const Eigen::Vector2d before = torso_tilt_over_foot(side, reference);
         const Eigen::Vector2d after = torso_tilt_over_foot(side, q);
-        EXPECT_NEAR(after[0] - before[0], -gains.kp_pitch * lean[0], 1e-9);  // backwards
-        EXPECT_NEAR(after[1] - before[1], -gains.kp_roll * lean[1], 1e-9);   // to the left
+        EXPECT_NEAR(after[0] - before[0], gains.kp_pitch * lean[0], 1e-9);  // on forwards
+        EXPECT_NEAR(after[1] - before[1], gains.kp_roll * lean[1], 1e-9);   // on to the right
       }
     }
   }

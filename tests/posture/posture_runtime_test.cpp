@@ -119,9 +119,10 @@ TEST(PostureModules, LeaningTorsoIsEstimatedAndCorrectedAndStrategiesSwapMidRun)
   const int lhp = index(JointId::LHipPitch), rhr = index(JointId::RHipRoll);
   const int lap = index(JointId::LAnklePitch), rar = index(JointId::RAnkleRoll);
   Eigen::Vector2d d = expected_delta(HipStrategyParameters{});
-  EXPECT_NEAR(request[lhp] - reference[lhp], -d[0], 1e-12);  // Eq. 4.10, robot sign
-  EXPECT_GT(request[lhp], reference[lhp]);                   // forward lean: hip pitch up
-  EXPECT_LT(request[rhr], reference[rhr]);                   // left lean: hip roll down
+  EXPECT_NEAR(request[lhp] - reference[lhp], d[0], 1e-12);  // Eq. 4.10
+  EXPECT_NEAR(request[rhr] - reference[rhr], d[1], 1e-12);  // Eq. 4.11
+  EXPECT_LT(request[lhp], reference[lhp]);                  // forward lean: hip pitch down
+  EXPECT_GT(request[rhr], reference[rhr]);                  // left lean: hip roll up
   EXPECT_EQ(request[lap], reference[lap]);
   EXPECT_EQ(link.last.position[lhp], request[lhp]);
 
@@ -129,8 +130,8 @@ TEST(PostureModules, LeaningTorsoIsEstimatedAndCorrectedAndStrategiesSwapMidRun)
   ASSERT_TRUE(rt.step());
   d = expected_delta(AnkleStrategyParameters{});
   EXPECT_EQ(request[lhp], reference[lhp]);
-  EXPECT_NEAR(request[lap] - reference[lap], -d[0], 1e-12);  // Eq. 4.14
-  EXPECT_NEAR(request[rar] - reference[rar], -d[1], 1e-12);  // Eq. 4.15
+  EXPECT_NEAR(request[lap] - reference[lap], d[0], 1e-12);  // Eq. 4.14
+  EXPECT_NEAR(request[rar] - reference[rar], d[1], 1e-12);  // Eq. 4.15
   EXPECT_NEAR(rt.representation<PostureCorrectedRequest>().pitch_correction, d[0], 1e-12);
 
   rt.swap_provider("PostureCorrectedRequest", "NoPostureControl");
@@ -139,7 +140,7 @@ TEST(PostureModules, LeaningTorsoIsEstimatedAndCorrectedAndStrategiesSwapMidRun)
 
   rt.swap_provider("PostureCorrectedRequest", "default");
   ASSERT_TRUE(rt.step());
-  EXPECT_GT(request[lhp], reference[lhp]);  // hip strategy again
+  EXPECT_LT(request[lhp], reference[lhp]);  // hip strategy again
   EXPECT_EQ(request[lap], reference[lap]);
 }
 
