@@ -112,9 +112,12 @@ void Simulation::step() {
   }
 }
 
-void Simulation::run_for(double seconds) {
+void Simulation::run_for(double seconds, const std::function<void()>& after_step) {
   const auto n = static_cast<std::uint64_t>(std::llround(seconds / scene_.physics.step));
-  for (std::uint64_t k = 0; k < n; ++k) step();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    step();
+    if (after_step) after_step();
+  }
 }
 
 void Simulation::check_finite() const {

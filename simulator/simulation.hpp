@@ -37,7 +37,8 @@ class Simulation {
 
   // One physics step; control frames close (sensors sampled, controllers called) on their ticks.
   void step();
-  void run_for(double seconds);
+  // Steps for `seconds`; `after_step`, if given, is called after every physics step.
+  void run_for(double seconds, const std::function<void()>& after_step = {});
 
   double time() const { return static_cast<double>(steps_) * scene_.physics.step; }
   std::uint64_t steps() const { return steps_; }

@@ -50,15 +50,10 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     else if (!snapshot.empty())
       render::resolve_view(sim, view);  // a bad view fails before the run, not after it
     const auto t0 = std::chrono::steady_clock::now();
-    if (recorder.active()) {
-      const auto n = static_cast<std::uint64_t>(std::llround(seconds / sim.scene().physics.step));
-      for (std::uint64_t k = 0; k < n; ++k) {
-        sim.step();
-        recorder.after_step(renderer, sim);
-      }
-    } else {
+    if (recorder.active())
+      sim.run_for(seconds, [&] { recorder.after_step(renderer, sim); });
+    else
       sim.run_for(seconds);
-    }
     sim::RunTiming timing;
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out << sim::run_report_text(sim, timing);

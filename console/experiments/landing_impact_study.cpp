@@ -35,21 +35,15 @@ double floor_force_on(const sim::PhysicsWorld& world, int robot, int link) {
   return f;
 }
 
-// Motor torques that hold the leg's own weight (the g(theta) of Eq. 6.17), leg order.
+// Motor torques that hold the leg's own weight (the g(theta) of Eq. 6.17), leg order. Joint j
+// carries every link of the chain from its own child link down to the foot.
 model::LegAngles leg_gravity_compensation(const sim::RobotBody& body) {
-  const char* below[6][6] = {{"LPelvis", "LHip", "LThigh", "LTibia", "LAnkle", "LFoot"},
-                             {"LHip", "LThigh", "LTibia", "LAnkle", "LFoot", nullptr},
-                             {"LThigh", "LTibia", "LAnkle", "LFoot", nullptr, nullptr},
-                             {"LTibia", "LAnkle", "LFoot", nullptr, nullptr, nullptr},
-                             {"LAnkle", "LFoot", nullptr, nullptr, nullptr, nullptr},
-                             {"LFoot", nullptr, nullptr, nullptr, nullptr, nullptr}};
+  constexpr std::array<const char*, 6> kChildLinks = {"LPelvis", "LHip",   "LThigh",
+                                                      "LTibia",  "LAnkle", "LFoot"};
   model::LegAngles g{};
-  for (int j = 0; j < 6; ++j) {
-    double tau = 0;
-    for (int k = 0; k < 6 && below[j][k]; ++k)
-      tau += sim::gravity_torque_about_joint(body, kLegNames[j], {below[j][k]});
-    g[j] = -tau;  // the motor opposes gravity
-  }
+  for (int j = 0; j < 6; ++j)
+    for (int k = j; k < 6; ++k)  // the motor opposes gravity
+      g[j] -= sim::gravity_torque_about_joint(body, kLegNames[j], {kChildLinks[k]});
   return g;
 }
 

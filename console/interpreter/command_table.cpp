@@ -102,13 +102,7 @@ void check_video(const Words& a) {
     return;
   }
   if (a[0] != "start") throw Error("expected start or stop, got '" + a[0] + "'");
-  if (a.size() < 2) throw Error("video start: expected a directory");
-  std::size_t i = 2;
-  if (i < a.size() && a[i] != "fps") ++i;  // a view name
-  if (i < a.size()) {
-    if (a[i] != "fps" || i + 2 != a.size()) throw Error("expected 'fps <frames per second>' last");
-    parse_integer(a[i + 1], "fps", 1, 1000);
-  }
+  parse_video_start(a);
 }
 void check_mv(const Words& a) {
   const char* names[] = {"x", "y", "z", "yaw"};
@@ -135,6 +129,19 @@ void check_wait(const Words& a) {
 }
 
 }  // namespace
+
+VideoStart parse_video_start(const Words& a) {
+  if (a.size() < 2) throw Error("video start: expected a directory");
+  VideoStart v;
+  v.dir = a[1];
+  std::size_t i = 2;
+  if (i < a.size() && a[i] != "fps") v.view = a[i++];
+  if (i < a.size()) {
+    if (a[i] != "fps" || i + 2 != a.size()) throw Error("expected 'fps <frames per second>' last");
+    v.fps = parse_integer(a[i + 1], "fps", 1, 1000);
+  }
+  return v;
+}
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {

@@ -23,6 +23,13 @@ const std::vector<CommandSpec>& command_table();
 const CommandSpec* find_command(std::string_view name);  // nullptr if unknown
 std::vector<std::string> command_names();
 
+// `video start <dir> [view] [fps N]` read once for both the check and the command.
+struct VideoStart {
+  std::string dir, view;  // view empty: the default view
+  long long fps = 25;
+};
+VideoStart parse_video_start(const Words& args);  // args[0] == "start"; throws stride::Error
+
 // Keys the console reads: representation:X[.path], module:X[.path], sim.*, robot.*, log.*.
 bool is_value_key(std::string_view key);
 bool is_framework_key(std::string_view key);  // representation:X or module:X, with a name

@@ -179,14 +179,10 @@ void Interpreter::video(const std::vector<std::string>& a) {
     out_ << "video: " << target_.video_stop() << " frames\n";
     return;
   }
-  std::string view;
-  long long fps = 25;
-  std::size_t i = 2;
-  if (i < a.size() && a[i] != "fps") view = a[i++];
-  if (i + 1 < a.size()) fps = parse_integer(a[i + 1], "fps", 1, 1000);
-  const double steps = 1.0 / (static_cast<double>(fps) * target_.step_seconds());
-  target_.video_start(a[1], view, std::max<std::uint64_t>(1, std::llround(steps)));
-  out_ << "video: frames to " << a[1] << "/ at " << fps << " fps while running\n";
+  const VideoStart v = parse_video_start(a);
+  const double steps = 1.0 / (static_cast<double>(v.fps) * target_.step_seconds());
+  target_.video_start(v.dir, v.view, std::max<std::uint64_t>(1, std::llround(steps)));
+  out_ << "video: frames to " << v.dir << "/ at " << v.fps << " fps while running\n";
 }
 
 namespace {

@@ -1,7 +1,5 @@
 #include "console/session/sim_session.hpp"
 
-#include <memory>
-
 #include "behaviours/module_catalogue.hpp"
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_parser.hpp"
@@ -71,13 +69,13 @@ void SimSession::attach_controllers() {
     Runtime* rt = runtimes_[i].get();
     if (!rt) continue;
     const auto* changes = &sim_->scene().robots[i].controller.changes;
-    auto next = std::make_shared<std::size_t>(0);
     sim::Simulation* sim = sim_.get();
-    sim_->set_controller(i, [rt, changes, next, sim](sim::SimulatedRobot&) {
-      while (*next < changes->size() && (*changes)[*next].time <= sim->time() + 1e-9)
-        apply_change(*rt, (*changes)[(*next)++]);
-      rt->step();
-    });
+    sim_->set_controller(
+        i, [rt, changes, sim, next = std::size_t{0}](sim::SimulatedRobot&) mutable {
+          while (next < changes->size() && (*changes)[next].time <= sim->time() + 1e-9)
+            apply_change(*rt, (*changes)[next++]);
+          rt->step();
+        });
   }
 }
 

@@ -90,8 +90,7 @@ class Parser {
     } else
       e.fail(
           "unknown element (expected physics, ground, box, ramp, uneven, robot, push, camera, "
-          "light "
-          "or include)");
+          "light or include)");
   }
 
   void no_children(const XmlElement& e) {
@@ -295,20 +294,38 @@ class Parser {
     out_.robots.push_back(std::move(r));
   }
 
+  // A <provider> or <parameter> element as (representation, module) or ("Module.field", value);
+  // anything else fails with `expected`.
+  static ControllerChange setting(const XmlElement& e, const char* expected) {
+    ControllerChange c;
+    c.file = e.file();
+    c.line = e.line();
+    if (e.name() == "provider") {
+      e.allow_only({"representation", "module"});
+      c.kind = ControllerChange::Kind::Provider;
+      c.first = e.text("representation");
+      c.second = e.text("module");
+    } else if (e.name() == "parameter") {
+      e.allow_only({"module", "field", "value"});
+      c.first = e.text("module") + "." + e.text("field");
+      c.second = e.text("value");
+    } else {
+      e.fail(expected);
+    }
+    return c;
+  }
+
   void controller(const XmlElement& e, ControllerConfig& cfg) {
     for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
       XmlElement child(c, e.file());
-      if (child.name() == "provider") {
-        child.allow_only({"representation", "module"});
-        cfg.providers[child.text("representation")] = child.text("module");
-      } else if (child.name() == "parameter") {
-        child.allow_only({"module", "field", "value"});
-        cfg.parameters[child.text("module") + "." + child.text("field")] = child.text("value");
-      } else if (child.name() == "at") {
+      if (child.name() == "at") {
         timed_changes(child, cfg);
-      } else {
-        child.fail("unknown element in <controller> (expected provider, parameter or at)");
+        continue;
       }
+      const ControllerChange s =
+          setting(child, "unknown element in <controller> (expected provider, parameter or at)");
+      (s.kind == ControllerChange::Kind::Provider ? cfg.providers : cfg.parameters)[s.first] =
+          s.second;
     }
     std::stable_sort(cfg.changes.begin(), cfg.changes.end(),
                      [](const auto& a, const auto& b) { return a.time < b.time; });
@@ -322,23 +339,9 @@ class Parser {
     if (!(time >= 0)) e.fail_attr("time", "expected a time >= 0");
     if (!e.raw()->FirstChildElement()) e.fail("expected <provider> or <parameter> inside <at>");
     for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      XmlElement child(c, e.file());
-      ControllerChange change;
+      ControllerChange change = setting(XmlElement(c, e.file()),
+                                        "unknown element in <at> (expected provider or parameter)");
       change.time = time;
-      change.file = child.file();
-      change.line = child.line();
-      if (child.name() == "provider") {
-        child.allow_only({"representation", "module"});
-        change.kind = ControllerChange::Kind::Provider;
-        change.first = child.text("representation");
-        change.second = child.text("module");
-      } else if (child.name() == "parameter") {
-        child.allow_only({"module", "field", "value"});
-        change.first = child.text("module") + "." + child.text("field");
-        change.second = child.text("value");
-      } else {
-        child.fail("unknown element in <at> (expected provider or parameter)");
-      }
       cfg.changes.push_back(std::move(change));
     }
   }
