@@ -1,6 +1,7 @@
 // What the solver setting buys: for each setting, the cost of a physics step and how well the
 // standing NAO, a hanging leg and the 17 s open-loop walk come out. Prints one table row each.
-// Usage: solver_tradeoff_bench [--quick]   (--quick skips the walk)
+// Usage: solver_tradeoff_bench [--quick] [iterations:sor ...]
+//   --quick skips the walk; settings given replace the built-in list (e.g. 8:1.6).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,12 +23,14 @@ struct Setting {
   const char* label;
   PhysicsSettings::Solver solver;
   int iterations;
+  double sor = 1.3;  // ODE's default over-relaxation
 };
 
 sim::SceneDescription load(const std::string& rel, const Setting& s) {
   auto scene = sim::parse_scene_file(std::string(STRIDE_SOURCE_DIR) + "/" + rel);
   scene.physics.solver = s.solver;
   scene.physics.iterations = s.iterations;
+  scene.physics.sor = s.sor;
   for (auto& r : scene.robots) r.sensors.noise = false;
   return scene;
 }
@@ -96,14 +99,33 @@ double hanging_current_error_pct(const Setting& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::string(argv[1]) == "--quick";
-  const std::vector<Setting> settings = {
+  bool quick = false;
+  std::vector<std::string> custom;  // "iterations:sor" pairs from the command line
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick")
+      quick = true;
+    else
+      custom.push_back(a);
+  }
+  std::vector<Setting> settings = {
       {"iterative 5", PhysicsSettings::Solver::Iterative, 5},
       {"iterative 10", PhysicsSettings::Solver::Iterative, 10},
       {"iterative 20", PhysicsSettings::Solver::Iterative, 20},
       {"iterative 40", PhysicsSettings::Solver::Iterative, 40},
       {"exact", PhysicsSettings::Solver::Exact, 20},
   };
+  std::vector<std::string> labels;
+  labels.reserve(custom.size());
+  if (!custom.empty()) settings.clear();
+  for (const std::string& c : custom) {
+    const auto colon = c.find(':');
+    const int iterations = std::stoi(c.substr(0, colon));
+    const double sor = colon == std::string::npos ? 1.3 : std::stod(c.substr(colon + 1));
+    labels.push_back("iterative " + std::to_string(iterations) + ", SOR " + c.substr(colon + 1));
+    settings.push_back(
+        {labels.back().c_str(), PhysicsSettings::Solver::Iterative, iterations, sor});
+  }
   std::printf(
       "| solver | us/step standing | real time | standing 10 s: torso drift | FSR sum - mg | joint "
       "anchor gap | hanging hip current vs statics | 17 s open-loop walk |\n|---|---|---|---|---|"

@@ -78,7 +78,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
       dJointAttach(weld, body_->body(model_->root_link), nullptr);
       dJointSetFixed(weld);
     }
-    servos_ = std::make_unique<ServoBank>(*body_, devices_);
+    servos_ = std::make_unique<ServoBank>(*body_, devices_, world.settings().step);
     if (!placement.devices.empty()) {
       imu_.emplace(*body_, devices_.imu,
                    NoiseSource::for_stream(scene_seed, placement.name + "/imu"));

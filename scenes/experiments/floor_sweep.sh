@@ -1,22 +1,32 @@
 #!/usr/bin/env bash
 # Floor roughness x strategy x speed x seed for the Sec. 4.3.4.2 walks: copies of the
 # {none,hip,ankle}_{slow,medium,fast} scenes with the <uneven> patch's height and tilt replaced
-# (or removed: "flat"), each run with `stride run` and summarised from its report.
-#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds]
+# (or removed: "flat"), each run with `stride run` and summarised from its report. A spring
+# (N*m/rad) gives the leg motors (roll, pitch) the opt-in compliant servo in a copied device file.
+#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] [spring]
 #   e.g. floor_sweep.sh build/stride "flat 1mm:0.5deg 3mm:1deg 4.5mm:1.5deg 6mm:2deg" 3
-# Prints one line per walk: floor strategy speed seed fell steps max|pitch| max|roll|.
+#        floor_sweep.sh build/stride 3mm:1deg 3 200
+# Prints one line per walk: floor strategy speed seed fell steps true-distance max|pitch| max|roll|.
 set -euo pipefail
 stride=$(realpath "$1")
 floors=$2
 seeds=${3:-3}
+spring=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+robots=$here/../robots
+if [[ -n $spring ]]; then
+  cp -r "$robots" "$tmp/robots"
+  robots=$tmp/robots
+  sed -i -E "s#(<motor name=\"(roll|pitch)\"[^/]*)/>#\1 spring=\"$spring\"/>#" "$robots/nao/nao.devices.xml"
+  grep -q "spring=\"$spring\"" "$robots/nao/nao.devices.xml"
+fi
 for floor in $floors; do
   for strategy in none hip ankle; do
     for speed in slow medium fast; do
       scene=$tmp/${strategy}_${speed}.xml
-      sed "s#\.\./robots/#$here/../robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
+      sed "s#\.\./robots/#$robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
       if [[ $floor == flat ]]; then
         sed -i '/<uneven /d' "$scene"
       else
@@ -25,7 +35,7 @@ for floor in $floors; do
       for ((seed = 1; seed <= seeds; ++seed)); do
         "$stride" run "$scene" --seconds 18.5 --seed "$seed" --report "$tmp/r.json" > /dev/null
         python3 -c 'import json,sys; r=json.load(open(sys.argv[1]))["robots"][0]; w=r["walk"]
-print(*sys.argv[2:], "fell" if w["fell"] or r["fell"] else "up", w["steps"],
+print(*sys.argv[2:], "fell" if w["fell"] or r["fell"] else "up", w["steps"], "%.2f" % w["true_distance"],
       "%.3f" % max(-w["pitch_min"], w["pitch_max"]), "%.3f" % max(-w["roll_min"], w["roll_max"]))' \
           "$tmp/r.json" "$floor" "$strategy" "$speed" "$seed"
       done

@@ -17,6 +17,10 @@ struct MotorSpec {
   double no_load_speed = 5;       // rad/s at the joint
   double torque_constant = 0.01;  // N*m/A at the motor shaft
   double gain = 100;              // 1/s: target joint speed per radian of position error
+  // Opt-in compliant position servo: torque = spring * error - damping * speed (bounded as
+  // above) instead of the stiff velocity servo. 0 keeps the velocity servo.
+  double spring = 0;   // N*m/rad at the joint, at stiffness 1
+  double damping = 0;  // N*m*s/rad at the joint; 0 with a spring: back-EMF, stall/no-load speed
 };
 
 struct ServoSpec {

@@ -26,7 +26,8 @@ double positive(const XmlElement& e, const char* a, double fallback,
 }
 
 MotorSpec motor(const XmlElement& e) {
-  e.allow_only({"name", "ratio", "stall_torque", "no_load_speed", "torque_constant", "gain"});
+  e.allow_only({"name", "ratio", "stall_torque", "no_load_speed", "torque_constant", "gain",
+                "spring", "damping"});
   MotorSpec m;
   m.name = e.text("name");
   m.ratio = positive(e, "ratio", m.ratio);
@@ -34,6 +35,13 @@ MotorSpec motor(const XmlElement& e) {
   m.no_load_speed = positive(e, "no_load_speed", m.no_load_speed, Dimension::Angle);
   m.torque_constant = positive(e, "torque_constant", m.torque_constant);
   m.gain = positive(e, "gain", m.gain);
+  if (e.has("spring")) {
+    m.spring = positive(e, "spring", m.spring);
+    // A voltage-driven DC motor brakes with its back-EMF: stall torque over no-load speed.
+    m.damping = positive(e, "damping", m.stall_torque / m.no_load_speed);
+  } else if (e.has("damping")) {
+    e.fail_attr("damping", "only with a spring (the velocity servo has no damping setting)");
+  }
   return m;
 }
 

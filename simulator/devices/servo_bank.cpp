@@ -7,7 +7,8 @@
 
 namespace stride::sim {
 
-ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices) {
+ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, double step)
+    : step_(step) {
   const auto& model = body.model();
   servo_of_joint_.assign(model.joints.size(), -1);
   for (const ServoSpec& s : devices.servos) {
@@ -37,8 +38,16 @@ void ServoBank::apply(const RobotBody& body) {
     const double max_torque = m.stall_torque * speed_factor;
     if (c.mode == hal::ServoMode::Position) {
       const double err = c.position - body.joint_position(j);
-      const double v = std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed);
-      dJointSetHingeParam(id, dParamVel, v);
+      if (m.spring > 0) {
+        // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
+        // spring taken at the end of the step so that stiff springs stay stable.
+        const double softness = 1.0 / (step_ * m.spring + m.damping);
+        dJointSetHingeParam(id, dParamVel, m.spring * err * softness);
+        dJointSetHingeParam(id, dParamCFM, softness);
+      } else {
+        dJointSetHingeParam(id, dParamVel,
+                            std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed));
+      }
       dJointSetHingeParam(id, dParamFMax, std::clamp(c.stiffness, 0.0, 1.0) * max_torque);
       applied_torque_[s] = 0;
     } else {

@@ -1,6 +1,7 @@
 #pragma once
-// NAO-like servos on a RobotBody: a velocity-servo position controller whose torque is bounded by
-// stiffness x the motor's speed-dependent torque, or a direct torque command.
+// NAO-like servos on a RobotBody: a velocity-servo position controller (or, opt-in, a compliant
+// spring-damper one) whose torque is bounded by stiffness x the motor's speed-dependent torque,
+// or a direct torque command.
 #include <vector>
 
 #include "robot/hal/actuator_frame.hpp"
@@ -19,7 +20,8 @@ struct ServoCommand {
 class ServoBank {
  public:
   // One servo per joint named in the device file; joints without a servo are passive.
-  ServoBank(const RobotBody& body, const DeviceDescription& devices);
+  // step: the physics step (s), which the compliant servo's implicit spring needs.
+  ServoBank(const RobotBody& body, const DeviceDescription& devices, double step);
 
   int servo_of_joint(int model_joint) const { return servo_of_joint_[model_joint]; }
   int count() const { return static_cast<int>(joints_.size()); }
@@ -37,6 +39,7 @@ class ServoBank {
   void take_mean_currents(std::vector<double>& out);
 
  private:
+  double step_;
   std::vector<int> joints_;  // model joint index per servo
   std::vector<const MotorSpec*> motors_;
   std::vector<int> servo_of_joint_;

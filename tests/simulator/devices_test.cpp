@@ -1,9 +1,15 @@
-// Simulated devices: servo torque mode, motor currents from torque, encoder quantisation, IMU.
+// Simulated devices: servo torque mode, motor currents from torque, encoder quantisation, IMU,
+// the opt-in compliant servo.
+#include <unistd.h>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "robot/core/error.hpp"
 #include "robot/hal/joint_id.hpp"
 #include "simulator/world/gravity_torque.hpp"
 #include "tests/simulator/sim_test_util.hpp"
@@ -19,6 +25,69 @@ std::string hanging_nao(const std::string& extra_joints, const std::string& sens
     <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices="../../scenes/robots/nao/nao.devices.xml"
            xyz="0 0 1" fixed="true"><joints )" +
          extra_joints + "/>" + sensors + "</robot></scene>";
+}
+
+// nao.devices.xml with `attributes` added to the pitch motor, written to a temporary file.
+class PitchMotorVariant {
+ public:
+  explicit PitchMotorVariant(const std::string& attributes) {
+    std::ifstream in(test::source_path("scenes/robots/nao/nao.devices.xml"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string xml = text.str();
+    const std::string motor = "<motor name=\"pitch\"";
+    const auto at = xml.find('/', xml.find(motor));
+    xml.insert(at, " " + attributes + " ");
+    path_ = std::filesystem::temp_directory_path() /
+            ("stride_devices_" + std::to_string(getpid()) + ".xml");
+    std::ofstream(path_) << xml;
+  }
+  ~PitchMotorVariant() { std::filesystem::remove(path_); }
+  std::string scene(const std::string& joints) const {
+    return R"(<scene><ground enabled="false"/><physics solver="exact"/>
+      <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices=")" +
+           path_.string() + R"(" xyz="0 0 1" fixed="true"><joints )" + joints +
+           R"(/><sensors noise="off"/></robot></scene>)";
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A spring of K N*m/rad sags under the hung leg's gravity torque tau by tau / K, where the
+// velocity servo holds the target exactly.
+TEST(Devices, CompliantServoSagsByGravityTorqueOverSpring) {
+  const double spring = 60;
+  PitchMotorVariant compliant("spring=\"" + std::to_string(spring) + "\"");
+  auto sim = test::scene_from_text(compliant.scene(R"(LHipPitch="-0.6")"));
+  auto& robot = sim->robot(0);
+  sim->run_for(3.0);
+  const int j = robot.model().joint_index("LHipPitch");
+  const double q = robot.body().joint_position(j);
+  const double tau = sim::gravity_torque_about_joint(robot.body(), "LHipPitch",
+                                                     {"LThigh", "LTibia", "LAnkle", "LFoot"});
+  EXPECT_GT(std::abs(tau), 0.3);
+  // The servo's torque balances gravity: spring * (target - q) + tau = 0.
+  EXPECT_NEAR(spring * (-0.6 - q), -tau, 0.02 * std::abs(tau));
+  EXPECT_GT(std::abs(q + 0.6), 0.005);  // a visible sag, unlike the stiff servo
+
+  auto stiff = test::scene_from_text(PitchMotorVariant("").scene(R"(LHipPitch="-0.6")"));
+  stiff->run_for(3.0);
+  EXPECT_NEAR(stiff->robot(0).body().joint_position(j), -0.6, 1e-3);
+}
+
+// With the spring comes back-EMF damping, stall torque / no-load speed; damping alone is an error.
+TEST(Devices, CompliantServoAttributesAreChecked) {
+  PitchMotorVariant only_damping("damping=\"1\"");
+  try {
+    test::scene_from_text(only_damping.scene(R"(LHipPitch="-0.6")"));
+    FAIL() << "damping without spring accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("damping"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(".xml:"), std::string::npos) << e.what();
+  }
+  PitchMotorVariant negative("spring=\"-5\"");
+  EXPECT_THROW(test::scene_from_text(negative.scene(R"(LHipPitch="-0.6")")), Error);
 }
 
 TEST(Devices, TorqueModeWithZeroTorqueLetsTheLegSwingDown) {
@@ -83,6 +152,35 @@ TEST(Devices, ImuOfAStandingRobotReadsGravityAndTheGyroBias) {
   EXPECT_NEAR(gyro.x(), bias, 0.005);
   EXPECT_NEAR(gyro.y(), bias, 0.005);
   EXPECT_NEAR(gyro.z(), 0.0, 0.005);
+}
+
+// The gyro reads the time derivative of the torso angles (NAOqi signs, the Kalman filter's model,
+// Eq. 4.6): a NAO pushed forward and rocking back turns both the same way.
+TEST(Devices, GyroIsTheRateOfTheTorsoAngles) {
+  auto sim = test::scene_from_text(R"(<scene><physics seed="3"/>
+    <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices="../../scenes/robots/nao/nao.devices.xml">
+      <joints LHipPitch="-0.3" RHipPitch="-0.3" LKneePitch="0.6" RKneePitch="0.6"
+              LAnklePitch="-0.3" RAnklePitch="-0.3" LShoulderPitch="1.5" RShoulderPitch="1.5"/>
+      <sensors noise="off" delay="off"/>
+    </robot>
+    <push robot="nao" body="torso" force="30 0 0" start="0.1" duration="0.1"/></scene>)");
+  auto& robot = sim->robot(0);
+  const double bias = -18 * std::numbers::pi / 180;
+  double agree = 0, total = 0, largest = 0;
+  for (int k = 0; k < 60; ++k) {
+    const auto before = robot.torso_pose();
+    sim->run_for(0.01);
+    const auto after = robot.torso_pose();
+    const double rate = (after.pitch - before.pitch) / 0.01;
+    const double gyro = robot.latest_sensors().gyroscope[1] - bias;
+    if (std::abs(rate) < 0.05) continue;
+    largest = std::max(largest, std::abs(rate));
+    agree += rate * gyro > 0;
+    ++total;
+  }
+  EXPECT_GT(largest, 0.3);  // it did rock
+  EXPECT_GT(total, 10);
+  EXPECT_GE(agree / total, 0.9);
 }
 
 }  // namespace
