@@ -5,6 +5,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "console/experiments/walk_pool.hpp"
 #include "console/experiments/walk_recording.hpp"
 
 namespace stride::experiments {
@@ -20,14 +21,16 @@ int run_arm_swing_experiment(const ExperimentOptions& o, std::ostream& out) {
   plot::Table fig{{"t", "left_1", "right_1", "left_2", "right_2", "left_3", "right_3"}};
   std::vector<std::vector<double>> left(3), right(3);
   std::vector<double> times;
-  for (int i = 0; i < 3; ++i) {
+  std::vector<WalkSetup> setups;
+  for (const Row& t : thesis) {
     WalkSetup setup{scene_path(o, "hip_medium"), 1};
     std::ostringstream p;
-    p << "steps=80 A_l=0.001 V_min=" << thesis[i].speed - 0.005
-      << " V_max=" << thesis[i].speed + 0.005;
+    p << "steps=80 A_l=0.001 V_min=" << t.speed - 0.005 << " V_max=" << t.speed + 0.005;
     setup.parameters = {{"PatternWalk", p.str()}, {"ArmSwing", "gain_scale=1"}};
     setup.settle_seconds = 0.05;
-    const WalkRecording r = record_walk(setup);
+    setups.push_back(setup);
+  }
+  record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
     const WalkSummary s = summarize(r);
     for (const auto& row : r.trace.rows) {
       if (row[col(Trace::pattern_t)] < 0) continue;
@@ -40,7 +43,8 @@ int run_arm_swing_experiment(const ExperimentOptions& o, std::ostream& out) {
     rows.push_back({fixed(thesis[i].speed, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
                     std::to_string(s.steps), fixed(amplitude, 4), s.fell ? "yes" : "no",
                     fixed(thesis[i].speed, 4), fixed(thesis[i].step, 4)});
-  }
+    return true;
+  });
   for (std::size_t k = 0; k < times.size(); ++k) {
     std::vector<double> row{times[k]};
     for (int i = 0; i < 3; ++i) {

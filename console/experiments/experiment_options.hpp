@@ -15,6 +15,7 @@ struct ExperimentOptions {
   std::string out_dir;  // empty: print the table only
   int seeds = 0;        // 0: the experiment's own default
   bool plots = true;    // PNGs next to the CSVs (needs gnuplot)
+  int jobs = 1;         // walks run at once (worker processes); results do not depend on it
 };
 
 // scenes_dir/<name>.xml; throws stride::Error naming the path when it does not exist.

@@ -3,6 +3,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "console/experiments/walk_pool.hpp"
 #include "console/experiments/walk_recording.hpp"
 #include "robot/core/error.hpp"
 
@@ -48,27 +49,30 @@ int run_fastest_experiment(const ExperimentOptions& o, std::ostream& out) {
         WalkSummary w;
         int ok = 0;
         bool error = false;
+        std::vector<WalkSetup> setups;
         for (int seed = 1; seed <= seeds; ++seed) {
           WalkSetup setup{scene, static_cast<std::uint64_t>(seed)};
           setup.parameters = {{"PatternWalk", fast_walk_parameters(s, v)},
                               {"HipStrategy", gains.str()},
                               {"ArmSwing", "gain_scale=" + std::to_string(s.arm_swing)}};
-          WalkSummary one;
-          try {
-            one = summarize(record_walk(setup));
-          } catch (const Error& e) {  // e.g. the step no longer within the leg's reach
-            out << "  v " << fixed(v, 2) << " setting " << i + 1 << ": " << e.what() << "\n";
-            error = true;
-            break;
-          }
-          tried.add_row({double(uneven), v, double(i + 1), double(seed), s.T_stride, s.z_max,
-                         s.arm_swing, one.speed, one.distance, one.fell ? 1.0 : 0.0,
-                         std::max(-one.pitch_min, one.pitch_max),
-                         std::max(-one.roll_min, one.roll_max)});
-          ok += !one.fell && one.speed > 0.5 * v;
-          w.speed += one.speed / seeds, w.distance += one.distance / seeds;
-          w.step_length += one.step_length / seeds;
-          if (ok < seed) break;  // one failure decides
+          setups.push_back(setup);
+        }
+        try {
+          record_walks(setups, o.jobs, [&](std::size_t k, WalkRecording&& r) {
+            const int seed = static_cast<int>(k) + 1;
+            const WalkSummary one = summarize(r);
+            tried.add_row({double(uneven), v, double(i + 1), double(seed), s.T_stride, s.z_max,
+                           s.arm_swing, one.speed, one.distance, one.fell ? 1.0 : 0.0,
+                           std::max(-one.pitch_min, one.pitch_max),
+                           std::max(-one.roll_min, one.roll_max)});
+            ok += !one.fell && one.speed > 0.5 * v;
+            w.speed += one.speed / seeds, w.distance += one.distance / seeds;
+            w.step_length += one.step_length / seeds;
+            return ok == seed;  // one failure decides
+          });
+        } catch (const Error& e) {  // e.g. the step no longer within the leg's reach
+          out << "  v " << fixed(v, 2) << " setting " << i + 1 << ": " << e.what() << "\n";
+          error = true;
         }
         if (error) continue;
         stable = ok == seeds;

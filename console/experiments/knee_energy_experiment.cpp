@@ -1,10 +1,13 @@
 #include "console/experiments/knee_energy_experiment.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <ostream>
 #include <vector>
+
+#include "console/experiments/walk_pool.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -60,41 +63,49 @@ int run_knee_energy_experiment(const ExperimentOptions& o, std::ostream& out) {
                       "right_conventional"}};
   std::vector<std::vector<std::string>> rows;
   int falls = 0;
-  for (const EnergySpeed& sp : kSpeeds) {
-    Repeats rep[2];  // stretched, conventional
-    for (int conventional = 0; conventional < 2; ++conventional) {
-      const std::string scene =
-          std::string(conventional ? "energy_conventional_" : "energy_stretched_") +
-          std::to_string(sp.cm);
-      for (int seed = 1; seed <= seeds; ++seed) {
-        const WalkRecording r =
-            record_walk({scene_path(o, scene), static_cast<std::uint64_t>(seed)});
-        const WalkSummary s = summarize(r);
-        const KneeEnergy e = knee_energy(r);
-        falls += s.fell;
-        walks.add_row({double(sp.cm), double(conventional), double(seed), s.speed, e.left, e.right,
-                       e.left + e.right, double(e.samples), s.fell ? 1.0 : 0.0});
-        if (s.fell) continue;  // the thesis' walks were all stable: a fall is no energy sample
-        rep[conventional].speed.push_back(s.speed);
-        rep[conventional].left.push_back(e.left);
-        rep[conventional].right.push_back(e.right);
-        rep[conventional].total.push_back(e.left + e.right);
-        if (files && seed == 1 && sp.cm == 10) {  // Fig. 4.13: knee currents at 0.10 m/s
-          plot::Table cur{{"t", "left", "right"}};
-          for (const auto& row : r.trace.rows)
-            if (row[col(Trace::pattern_t)] >= 0)
-              cur.add_row({row[col(Trace::pattern_t)], row[col(Trace::knee_current_l)],
-                           row[col(Trace::knee_current_r)]});
-          write_plot(o, cur,
-                     std::string("energy_fig4.13_current_") +
-                         (conventional ? "conventional" : "stretched"),
-                     std::string("Knee currents at 0.10 m/s (") +
-                         (conventional ? "conventional" : "stretched-knee") + " pattern)",
-                     "t", {{"left", "LKneePitch", ""}, {"right", "RKneePitch", ""}}, "t [s]",
-                     "I [A]");
-        }
-      }
+  std::vector<WalkSetup> setups;
+  for (const EnergySpeed& sp : kSpeeds)
+    for (int conventional = 0; conventional < 2; ++conventional)
+      for (int seed = 1; seed <= seeds; ++seed)
+        setups.push_back({scene_path(o, std::string(conventional ? "energy_conventional_"
+                                                                 : "energy_stretched_") +
+                                            std::to_string(sp.cm)),
+                          static_cast<std::uint64_t>(seed)});
+  std::vector<std::array<Repeats, 2>> repeats(std::size(kSpeeds));  // stretched, conventional
+  record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
+    const std::size_t speed = i / (2 * seeds);
+    const int conventional = static_cast<int>(i / seeds % 2);
+    const int seed = static_cast<int>(i % seeds) + 1;
+    const EnergySpeed& sp = kSpeeds[speed];
+    const WalkSummary s = summarize(r);
+    const KneeEnergy e = knee_energy(r);
+    falls += s.fell;
+    walks.add_row({double(sp.cm), double(conventional), double(seed), s.speed, e.left, e.right,
+                   e.left + e.right, double(e.samples), s.fell ? 1.0 : 0.0});
+    if (s.fell) return true;  // the thesis' walks were all stable: a fall is no energy sample
+    Repeats& rep = repeats[speed][conventional];
+    rep.speed.push_back(s.speed);
+    rep.left.push_back(e.left);
+    rep.right.push_back(e.right);
+    rep.total.push_back(e.left + e.right);
+    if (files && seed == 1 && sp.cm == 10) {  // Fig. 4.13: knee currents at 0.10 m/s
+      plot::Table cur{{"t", "left", "right"}};
+      for (const auto& row : r.trace.rows)
+        if (row[col(Trace::pattern_t)] >= 0)
+          cur.add_row({row[col(Trace::pattern_t)], row[col(Trace::knee_current_l)],
+                       row[col(Trace::knee_current_r)]});
+      write_plot(
+          o, cur,
+          std::string("energy_fig4.13_current_") + (conventional ? "conventional" : "stretched"),
+          std::string("Knee currents at 0.10 m/s (") +
+              (conventional ? "conventional" : "stretched-knee") + " pattern)",
+          "t", {{"left", "LKneePitch", ""}, {"right", "RKneePitch", ""}}, "t [s]", "I [A]");
     }
+    return true;
+  });
+  for (std::size_t speed = 0; speed < std::size(kSpeeds); ++speed) {
+    const EnergySpeed& sp = kSpeeds[speed];
+    const auto& rep = repeats[speed];
     const double ours = mean_work(rep[0].total), base = mean_work(rep[1].total);
     auto lo = [](const std::vector<double>& v) {
       return v.empty() ? kNaN : *std::min_element(v.begin(), v.end());

@@ -4,6 +4,8 @@
 #include <limits>
 #include <ostream>
 
+#include "console/experiments/walk_pool.hpp"
+
 namespace stride::experiments {
 namespace {
 
@@ -92,31 +94,34 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
   plot::Table summary{{"case", "seed", "steps", "distance", "fk_distance", "speed", "step_length",
                        "pitch_min", "pitch_max", "roll_min", "roll_max", "fell"}};
   std::vector<std::vector<std::string>> rows;
-  for (std::size_t k = 0; k < posture_cases().size(); ++k) {
+  std::vector<WalkSetup> setups;
+  for (const PostureCase& c : posture_cases())
+    for (int seed = 1; seed <= seeds; ++seed)
+      setups.push_back({scene_path(o, c.scene), static_cast<std::uint64_t>(seed)});
+  record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
+    const std::size_t k = i / seeds;
+    const int seed = static_cast<int>(i % seeds) + 1;
     const PostureCase& c = posture_cases()[k];
-    for (int seed = 1; seed <= seeds; ++seed) {
-      WalkSetup setup{scene_path(o, c.scene), static_cast<std::uint64_t>(seed)};
-      const WalkRecording r = record_walk(setup);
-      const WalkSummary s = summarize(r);
-      summary.add_row({double(k), double(seed), double(s.steps), s.distance, s.fk_distance, s.speed,
-                       s.step_length, s.pitch_min, s.pitch_max, s.roll_min, s.roll_max,
-                       s.fell ? 1.0 : 0.0});
-      rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
-                      fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
-                      fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
-                      fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
-                      c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
-                      fixed(c.thesis_step, 4)});
-      if (files) {
-        const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
-        plot::write_csv(o.out_dir + "/posture_" + c.scene + suffix + "_trace.csv", r.trace);
-      }
-      if (files && seed == 1) {
-        write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
-                           c.scene.rfind("ankle", 0) == 0);
-      }
+    const WalkSummary s = summarize(r);
+    summary.add_row({double(k), double(seed), double(s.steps), s.distance, s.fk_distance, s.speed,
+                     s.step_length, s.pitch_min, s.pitch_max, s.roll_min, s.roll_max,
+                     s.fell ? 1.0 : 0.0});
+    rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
+                    fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
+                    fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
+                    fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
+                    c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
+                    fixed(c.thesis_step, 4)});
+    if (files) {
+      const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
+      plot::write_csv(o.out_dir + "/posture_" + c.scene + suffix + "_trace.csv", r.trace);
     }
-  }
+    if (files && seed == 1) {
+      write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
+                         c.scene.rfind("ankle", 0) == 0);
+    }
+    return true;
+  });
   out << "Posture control on the uneven floor, 15 s walks (Sec. 4.3.4.2); distance = ground-truth "
          "feet midpoint, fk = the thesis' FK measure\n";
   print_table(out,

@@ -55,6 +55,8 @@ TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   EXPECT_NE(err.find("unknown experiment 'walkabout'"), std::string::npos) << err;
   EXPECT_EQ(run({"posture", "--seeds", "0"}, err), 1);
   EXPECT_NE(err.find("--seeds"), std::string::npos) << err;
+  EXPECT_EQ(run({"posture", "--jobs", "0"}, err), 1);
+  EXPECT_NE(err.find("--jobs: expected 1..256"), std::string::npos) << err;
   EXPECT_EQ(run({"posture", "--scenes", "/nonexistent"}, err), 1);
   EXPECT_NE(err.find("not found"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);

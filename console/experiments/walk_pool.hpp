@@ -1,0 +1,22 @@
+#pragma once
+// Many experiment walks at once. ODE keeps process-wide state (its random generator drives the
+// solver's row order), so walks run in forked worker processes, not threads; results come back
+// in setup order and equal those of running the walks one by one.
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "console/experiments/walk_recording.hpp"
+
+namespace stride::experiments {
+
+// Records every setup with up to `jobs` workers (1: in this process) and hands each recording to
+// `use` in setup order; `use` returns false to stop early (the remaining walks are abandoned).
+// A walk's stride::Error is rethrown when its turn comes, after the earlier walks were used.
+void record_walks(const std::vector<WalkSetup>& setups, int jobs,
+                  const std::function<bool(std::size_t, WalkRecording&&)>& use);
+
+// The default for --jobs: the machine's hardware threads (at least 1).
+int default_jobs();
+
+}  // namespace stride::experiments
