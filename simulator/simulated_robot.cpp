@@ -50,6 +50,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
     model_ = std::make_unique<model::RobotModel>(model::load_urdf(placement.urdf));
     if (!placement.devices.empty()) devices_ = load_device_file(placement.devices);
     if (placement.period > 0) devices_.period = placement.period;  // the scene's choice wins
+    for (const MotorOverride& o : placement.motors) apply_motor_override(devices_, o);
   } catch (const Error& e) {
     throw error_at(placement.file, placement.line,
                    "<robot name=\"" + placement.name + "\">: " + e.what());

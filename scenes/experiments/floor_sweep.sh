@@ -2,7 +2,7 @@
 # Floor roughness x strategy x speed x seed for the Sec. 4.3.4.2 walks: copies of the
 # {none,hip,ankle}_{slow,medium,fast} scenes with the <uneven> patch's height and tilt replaced
 # (or removed: "flat"), each run with `stride run` and summarised from its report. A spring
-# (N*m/rad) gives the leg motors (roll, pitch) the opt-in compliant servo in a copied device file.
+# (N*m/rad) gives the leg motors (roll, pitch) the opt-in compliant servo (<motor> in <robot>).
 #   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] [spring]
 #   e.g. floor_sweep.sh build/stride "flat 1mm:0.5deg 3mm:1deg 4.5mm:1.5deg 6mm:2deg" 3
 #        floor_sweep.sh build/stride 3mm:1deg 3 200
@@ -15,18 +15,14 @@ spring=${4:-}
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-robots=$here/../robots
-if [[ -n $spring ]]; then
-  cp -r "$robots" "$tmp/robots"
-  robots=$tmp/robots
-  sed -i -E "s#(<motor name=\"(roll|pitch)\"[^/]*)/>#\1 spring=\"$spring\"/>#" "$robots/nao/nao.devices.xml"
-  grep -q "spring=\"$spring\"" "$robots/nao/nao.devices.xml"
-fi
 for floor in $floors; do
   for strategy in none hip ankle; do
     for speed in slow medium fast; do
       scene=$tmp/${strategy}_${speed}.xml
-      sed "s#\.\./robots/#$robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
+      sed "s#\.\./robots/#$here/../robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
+      if [[ -n $spring ]]; then
+        sed -i "s#</robot>#<motor name=\"roll\" spring=\"$spring\"/><motor name=\"pitch\" spring=\"$spring\"/></robot>#" "$scene"
+      fi
       if [[ $floor == flat ]]; then
         sed -i '/<uneven /d' "$scene"
       else

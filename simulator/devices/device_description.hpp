@@ -20,7 +20,19 @@ struct MotorSpec {
   // Opt-in compliant position servo: torque = spring * error - damping * speed (bounded as
   // above) instead of the stiff velocity servo. 0 keeps the velocity servo.
   double spring = 0;   // N*m/rad at the joint, at stiffness 1
-  double damping = 0;  // N*m*s/rad at the joint; 0 with a spring: back-EMF, stall/no-load speed
+  double damping = 0;  // N*m*s/rad at the joint; 0 with a spring: back-EMF_damping()
+  // A voltage-driven DC motor brakes with its back-EMF: stall torque over no-load speed.
+  double back_emf_damping() const { return stall_torque / no_load_speed; }
+  double spring_damping() const { return damping > 0 ? damping : back_emf_damping(); }
+};
+
+// A scene's change to one motor of the robot's device file: <motor name="..." gain="50"/> inside
+// <robot>. Values in SI units by attribute name (the <motor> attributes of the device file).
+struct MotorOverride {
+  std::string name;
+  std::map<std::string, double> values;
+  std::string file;  // where it was written
+  int line = 0;
 };
 
 struct ServoSpec {
@@ -68,5 +80,9 @@ struct DeviceDescription {
 
 // Throws stride::Error("file:line: ...").
 DeviceDescription load_device_file(const std::string& path);
+
+// Sets the override's values on the motor it names; throws stride::Error("file:line: ...") at
+// the override when the device file has no such motor or the result is inconsistent.
+void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_);
 
 }  // namespace stride::sim

@@ -1,9 +1,12 @@
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <vector>
 
 #include "robot/core/error.hpp"
 #include "robot/core/xml_error.hpp"
 #include "simulator/devices/device_description.hpp"
+#include "simulator/devices/device_parser.hpp"
 #include "simulator/scene/xml_element.hpp"
 
 namespace stride::sim {
@@ -25,23 +28,50 @@ double positive(const XmlElement& e, const char* a, double fallback,
   return v;
 }
 
+// The <motor> attributes besides its name, with their units and where they go.
+struct MotorNumber {
+  const char* attr;
+  Dimension dimension;
+  double MotorSpec::*field;
+};
+constexpr MotorNumber kMotorNumbers[] = {
+    {"ratio", Dimension::None, &MotorSpec::ratio},
+    {"stall_torque", Dimension::None, &MotorSpec::stall_torque},
+    {"no_load_speed", Dimension::Angle, &MotorSpec::no_load_speed},
+    {"torque_constant", Dimension::None, &MotorSpec::torque_constant},
+    {"gain", Dimension::None, &MotorSpec::gain},
+    {"spring", Dimension::None, &MotorSpec::spring},
+    {"damping", Dimension::None, &MotorSpec::damping},
+};
+
+// The attributes present on e (all > 0), by name.
+std::map<std::string, double> motor_numbers(const XmlElement& e) {
+  std::vector<std::string_view> allowed{"name"};
+  for (const MotorNumber& n : kMotorNumbers) allowed.push_back(n.attr);
+  e.allow_only(allowed);
+  std::map<std::string, double> values;
+  for (const MotorNumber& n : kMotorNumbers)
+    if (e.has(n.attr)) values[n.attr] = positive(e, n.attr, 1.0, n.dimension);
+  return values;
+}
+
+void set_motor_numbers(MotorSpec& m, const std::map<std::string, double>& values) {
+  for (const MotorNumber& n : kMotorNumbers)
+    if (auto it = values.find(n.attr); it != values.end()) m.*n.field = it->second;
+}
+
+// What no single attribute shows; empty when the motor is usable.
+std::string motor_problem(const MotorSpec& m) {
+  if (m.damping > 0 && m.spring <= 0)
+    return "damping is only for a spring (the velocity servo has no damping setting)";
+  return {};
+}
+
 MotorSpec motor(const XmlElement& e) {
-  e.allow_only({"name", "ratio", "stall_torque", "no_load_speed", "torque_constant", "gain",
-                "spring", "damping"});
   MotorSpec m;
   m.name = e.text("name");
-  m.ratio = positive(e, "ratio", m.ratio);
-  m.stall_torque = positive(e, "stall_torque", m.stall_torque);
-  m.no_load_speed = positive(e, "no_load_speed", m.no_load_speed, Dimension::Angle);
-  m.torque_constant = positive(e, "torque_constant", m.torque_constant);
-  m.gain = positive(e, "gain", m.gain);
-  if (e.has("spring")) {
-    m.spring = positive(e, "spring", m.spring);
-    // A voltage-driven DC motor brakes with its back-EMF: stall torque over no-load speed.
-    m.damping = positive(e, "damping", m.stall_torque / m.no_load_speed);
-  } else if (e.has("damping")) {
-    e.fail_attr("damping", "only with a spring (the velocity servo has no damping setting)");
-  }
+  set_motor_numbers(m, motor_numbers(e));
+  if (const std::string problem = motor_problem(m); !problem.empty()) e.fail(problem);
   return m;
 }
 
@@ -131,6 +161,30 @@ DeviceDescription load_device_file(const std::string& path) {
     }
   }
   return d;
+}
+
+MotorOverride motor_override(const XmlElement& e) {
+  MotorOverride o;
+  o.name = e.text("name");
+  o.values = motor_numbers(e);
+  if (o.values.empty()) e.fail("expected at least one motor attribute to change");
+  o.file = e.file();
+  o.line = e.line();
+  return o;
+}
+
+void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_) {
+  for (MotorSpec& m : devices.motors) {
+    if (m.name != override_.name) continue;
+    MotorSpec changed = m;
+    set_motor_numbers(changed, override_.values);
+    if (const std::string problem = motor_problem(changed); !problem.empty())
+      throw error_at(override_.file, override_.line, "<motor name=\"" + m.name + "\">: " + problem);
+    m = changed;
+    return;
+  }
+  throw error_at(override_.file, override_.line,
+                 "<motor name=\"" + override_.name + "\">: no such motor in " + devices.file);
 }
 
 }  // namespace stride::sim

@@ -41,7 +41,7 @@ void ServoBank::apply(const RobotBody& body) {
       if (m.spring > 0) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
-        const double softness = 1.0 / (step_ * m.spring + m.damping);
+        const double softness = 1.0 / (step_ * m.spring + m.spring_damping());
         dJointSetHingeParam(id, dParamVel, m.spring * err * softness);
         dJointSetHingeParam(id, dParamCFM, softness);
       } else {

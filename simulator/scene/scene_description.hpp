@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "simulator/devices/device_description.hpp"
+
 namespace stride::sim {
 
 struct PhysicsSettings {
@@ -83,6 +85,7 @@ struct RobotPlacement {
   bool fixed_base = false;  // weld the root link to the world (test rigs, swing-leg studies)
   double stiffness = 1.0;   // servo stiffness held until a controller commands otherwise
   double period = 0;        // s; control period overriding the device file's (0: keep it)
+  std::vector<MotorOverride> motors;  // <motor> changes to the device file, in order
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;

@@ -10,6 +10,7 @@
 #include "robot/core/error.hpp"
 #include "robot/core/pose.hpp"
 #include "robot/core/xml_error.hpp"
+#include "simulator/devices/device_parser.hpp"
 #include "simulator/scene/xml_element.hpp"
 
 namespace stride::sim {
@@ -287,8 +288,11 @@ class Parser {
         child.allow_only({});
         r.has_controller = true;
         controller(child, r.controller);
+      } else if (n == "motor") {
+        if (r.devices.empty()) child.fail("<motor> changes the device file, and there is none");
+        r.motors.push_back(motor_override(child));
       } else {
-        child.fail("unknown element in <robot> (expected joints, sensors or controller)");
+        child.fail("unknown element in <robot> (expected joints, sensors, controller or motor)");
       }
     }
     out_.robots.push_back(std::move(r));

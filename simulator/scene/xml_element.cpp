@@ -17,7 +17,7 @@ void XmlElement::fail_attr(const char* attr, const std::string& message) const {
   fail("attribute '" + std::string(attr) + "': " + message);
 }
 
-void XmlElement::allow_only(std::initializer_list<std::string_view> allowed) const {
+void XmlElement::allow_only(std::span<const std::string_view> allowed) const {
   for (const tinyxml2::XMLAttribute* a = e_->FirstAttribute(); a; a = a->Next()) {
     bool ok = false;
     for (auto n : allowed) ok = ok || n == a->Name();

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -24,7 +25,10 @@ class XmlElement {
   const tinyxml2::XMLElement* raw() const { return e_; }
 
   // Throws unless every attribute is in `allowed`.
-  void allow_only(std::initializer_list<std::string_view> allowed) const;
+  void allow_only(std::initializer_list<std::string_view> allowed) const {
+    allow_only(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+  }
+  void allow_only(std::span<const std::string_view> allowed) const;
 
   bool has(const char* attr) const { return e_->Attribute(attr) != nullptr; }
   std::string text(const char* attr) const;  // required

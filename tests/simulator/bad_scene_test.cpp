@@ -100,5 +100,26 @@ TEST(BadScene, IncludeReusesAFile) {
   EXPECT_DOUBLE_EQ(sim->scene().physics.step, 0.002);
 }
 
+// <motor> inside <robot> changes the device file's motor of that name, checked where written.
+TEST(BadScene, MotorOverrides) {
+  const std::string robot =
+      "<scene>\n<robot " + kNao + R"( devices="../../scenes/robots/nao/nao.devices.xml">)" + "\n";
+  expect_error(robot + R"(<motor name="pitch" damping="1"/></robot></scene>)", "bad.xml:3",
+               "damping is only for a spring");
+  expect_error(robot + R"(<motor name="elbow" gain="50"/></robot></scene>)", "bad.xml:3",
+               "no such motor");
+  expect_error(robot + R"(<motor name="pitch" gian="50"/></robot></scene>)", "bad.xml:3",
+               "unknown attribute 'gian'");
+  expect_error(robot + R"(<motor name="pitch" spring="-5"/></robot></scene>)", "bad.xml:3",
+               "expected a value > 0");
+  expect_error(robot + R"(<motor name="pitch"/></robot></scene>)", "bad.xml:3",
+               "at least one motor attribute");
+  expect_error(
+      "<scene>\n<robot " + kNao + ">\n" + R"(<motor name="pitch" gain="5"/></robot></scene>)",
+      "bad.xml:3", "there is none");
+  EXPECT_EQ(load_error(robot + R"(<motor name="pitch" gain="50" spring="150"/></robot></scene>)"),
+            "");
+}
+
 }  // namespace
 }  // namespace stride

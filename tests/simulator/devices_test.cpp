@@ -1,15 +1,10 @@
 // Simulated devices: servo torque mode, motor currents from torque, encoder quantisation, IMU,
 // the opt-in compliant servo.
-#include <unistd.h>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
 #include <gtest/gtest.h>
 
-#include "robot/core/error.hpp"
 #include "robot/hal/joint_id.hpp"
 #include "simulator/world/gravity_torque.hpp"
 #include "tests/simulator/sim_test_util.hpp"
@@ -27,39 +22,19 @@ std::string hanging_nao(const std::string& extra_joints, const std::string& sens
          extra_joints + "/>" + sensors + "</robot></scene>";
 }
 
-// nao.devices.xml with `attributes` added to the pitch motor, written to a temporary file.
-class PitchMotorVariant {
- public:
-  explicit PitchMotorVariant(const std::string& attributes) {
-    std::ifstream in(test::source_path("scenes/robots/nao/nao.devices.xml"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string xml = text.str();
-    const std::string motor = "<motor name=\"pitch\"";
-    const auto at = xml.find('/', xml.find(motor));
-    xml.insert(at, " " + attributes + " ");
-    path_ = std::filesystem::temp_directory_path() /
-            ("stride_devices_" + std::to_string(getpid()) + ".xml");
-    std::ofstream(path_) << xml;
-  }
-  ~PitchMotorVariant() { std::filesystem::remove(path_); }
-  std::string scene(const std::string& joints) const {
-    return R"(<scene><ground enabled="false"/><physics solver="exact"/>
-      <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices=")" +
-           path_.string() + R"(" xyz="0 0 1" fixed="true"><joints )" + joints +
-           R"(/><sensors noise="off"/></robot></scene>)";
-  }
-
- private:
-  std::filesystem::path path_;
-};
+// The hung NAO (exact solver, no noise) with `motor` changes to its device file in the scene.
+std::string hung_nao_with(const std::string& motor) {
+  return R"(<scene><ground enabled="false"/><physics solver="exact"/>
+    <robot name="nao" urdf="../../scenes/robots/nao/nao.urdf" devices="../../scenes/robots/nao/nao.devices.xml"
+           xyz="0 0 1" fixed="true"><joints LHipPitch="-0.6"/><sensors noise="off"/>)" +
+         motor + "</robot></scene>";
+}
 
 // A spring of K N*m/rad sags under the hung leg's gravity torque tau by tau / K, where the
 // velocity servo holds the target exactly.
 TEST(Devices, CompliantServoSagsByGravityTorqueOverSpring) {
   const double spring = 60;
-  PitchMotorVariant compliant("spring=\"" + std::to_string(spring) + "\"");
-  auto sim = test::scene_from_text(compliant.scene(R"(LHipPitch="-0.6")"));
+  auto sim = test::scene_from_text(hung_nao_with(R"(<motor name="pitch" spring="60"/>)"));
   auto& robot = sim->robot(0);
   sim->run_for(3.0);
   const int j = robot.model().joint_index("LHipPitch");
@@ -71,23 +46,33 @@ TEST(Devices, CompliantServoSagsByGravityTorqueOverSpring) {
   EXPECT_NEAR(spring * (-0.6 - q), -tau, 0.02 * std::abs(tau));
   EXPECT_GT(std::abs(q + 0.6), 0.005);  // a visible sag, unlike the stiff servo
 
-  auto stiff = test::scene_from_text(PitchMotorVariant("").scene(R"(LHipPitch="-0.6")"));
+  auto stiff = test::scene_from_text(hung_nao_with(""));
   stiff->run_for(3.0);
   EXPECT_NEAR(stiff->robot(0).body().joint_position(j), -0.6, 1e-3);
 }
 
-// With the spring comes back-EMF damping, stall torque / no-load speed; damping alone is an error.
-TEST(Devices, CompliantServoAttributesAreChecked) {
-  PitchMotorVariant only_damping("damping=\"1\"");
-  try {
-    test::scene_from_text(only_damping.scene(R"(LHipPitch="-0.6")"));
-    FAIL() << "damping without spring accepted";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("damping"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(".xml:"), std::string::npos) << e.what();
-  }
-  PitchMotorVariant negative("spring=\"-5\"");
-  EXPECT_THROW(test::scene_from_text(negative.scene(R"(LHipPitch="-0.6")")), Error);
+// Strong damping brings the hung leg to a new target without overshoot; a tenth of the
+// back-EMF damping lets it overshoot.
+TEST(Devices, CompliantServoDampingSetsTheOvershoot) {
+  auto overshoot = [](const std::string& damping) {
+    auto sim = test::scene_from_text(
+        hung_nao_with(R"(<motor name="pitch" spring="200" damping=")" + damping + R"("/>)"));
+    auto& robot = sim->robot(0);
+    const int j = robot.model().joint_index("LHipPitch");
+    sim->run_for(2.0);
+    const double rest = robot.body().joint_position(j);
+    hal::ActuatorFrame cmd = robot.latest_commands();
+    cmd.position[hal::index(JointId::LHipPitch)] += 0.1;
+    robot.write(cmd);
+    double furthest = 0;
+    for (int k = 0; k < 150; ++k) {
+      sim->run_for(0.01);
+      furthest = std::max(furthest, robot.body().joint_position(j) - rest);
+    }
+    return furthest / 0.1 - 1;
+  };
+  EXPECT_LT(overshoot("8"), 0.02);
+  EXPECT_GT(overshoot("0.12"), 0.05);
 }
 
 TEST(Devices, TorqueModeWithZeroTorqueLetsTheLegSwingDown) {

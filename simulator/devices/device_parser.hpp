@@ -1,0 +1,12 @@
+#pragma once
+// Reading <motor> overrides that a scene writes inside <robot> (the device file itself is read
+// by load_device_file, declared with the description).
+#include "simulator/devices/device_description.hpp"
+#include "simulator/scene/xml_element.hpp"
+
+namespace stride::sim {
+
+// Checks the attributes (units, > 0) where they are written; fails through XmlElement.
+MotorOverride motor_override(const XmlElement& e);
+
+}  // namespace stride::sim
