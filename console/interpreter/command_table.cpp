@@ -169,6 +169,10 @@ const std::vector<CommandSpec>& command_table() {
        nullptr},
       {"push", "push <body> <fx> <fy> <fz> <seconds>", "apply a force (N) to a link", 5, 5,
        check_push},
+      {"robot", "robot [<name>|?]",
+       "select the robot that robot keys, framework keys, mr, dr, log, push, mv, sn and the "
+       "built-in views act on; without a name or with ? list the robots",
+       0, 1, nullptr},
       {"mv", "mv <x> <y> <z> [yaw]", "move the robot (m, rad)", 3, 4, check_mv},
       {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
       {"snapshot", "snapshot <file.png> [view]",

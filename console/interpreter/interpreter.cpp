@@ -209,6 +209,7 @@ void Interpreter::dispatch(const Command& c) {
                  parse_number(a[4], "seconds"));
     return;
   }
+  if (n == "robot") return select_robot(a);
   if (n == "mv") {
     target_.move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"), parse_number(a[2], "z"),
                        a.size() > 3 ? parse_number(a[3], "yaw")

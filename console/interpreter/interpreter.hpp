@@ -50,6 +50,7 @@ class Interpreter {
   void help(const std::vector<std::string>& a);
   void get(const std::vector<std::string>& a);
   void module_request(const std::vector<std::string>& a);
+  void select_robot(const std::vector<std::string>& a);
   void debug_request(const std::vector<std::string>& a);
   void watch(const std::vector<std::string>& a);
   void plot(const std::vector<std::string>& a);

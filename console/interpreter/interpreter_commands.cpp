@@ -53,6 +53,16 @@ void Interpreter::module_request(const std::vector<std::string>& a) {
   out_ << a[0] << " <- " << target_.provider_of(a[0]) << "\n";
 }
 
+void Interpreter::select_robot(const std::vector<std::string>& a) {
+  if (a.empty() || a[0] == "?") {
+    const std::string selected = target_.selected_robot();
+    for (const auto& name : target_.robot_names())
+      out_ << (name == selected ? "* " : "  ") << name << "\n";
+    return;
+  }
+  target_.select_robot(a[0]);
+}
+
 void Interpreter::debug_request(const std::vector<std::string>& a) {
   if (a[0] == "?") {
     const auto all = target_.debug_requests();

@@ -32,10 +32,10 @@ auto safely(F f) -> decltype(f()) {
 }
 
 const std::vector<std::string> kSimKeys = {
-    "sim.time",      "sim.steps",     "sim.hash",         "robot.fell",        "robot.torso.x",
-    "robot.torso.y", "robot.torso.z", "robot.torso.roll", "robot.torso.pitch", "robot.torso.yaw",
-    "robot.com.x",   "robot.com.y",   "robot.com.z",      "log.frames",        "log.mismatches",
-    "log.compared",  "log.replayed"};
+    "sim.time",        "sim.steps",     "sim.hash",      "robot.name",       "robot.fell",
+    "robot.torso.x",   "robot.torso.y", "robot.torso.z", "robot.torso.roll", "robot.torso.pitch",
+    "robot.torso.yaw", "robot.com.x",   "robot.com.y",   "robot.com.z",      "log.frames",
+    "log.mismatches",  "log.compared",  "log.replayed"};
 
 std::vector<std::string> field_names(const std::string& key, Target& target) {
   return safely([&] {
@@ -143,6 +143,11 @@ std::vector<std::string> complete(const std::vector<std::string>& before, const 
     return position == 2 ? starting_with({"on", "off"}, word) : std::vector<std::string>{};
   }
   if (command == "realtime" && position == 1) return starting_with({"on", "off"}, word);
+  if (command == "robot" && position == 1) {
+    auto names = safely([&] { return target.robot_names(); });
+    names.push_back("?");
+    return starting_with(names, word);
+  }
   if (command == "log") {
     if (position == 1)
       return starting_with({"start", "stop", "load", "goto", "export", "replay"}, word);

@@ -31,22 +31,53 @@ SimSession& LocalTarget::session() {
   return *session_;
 }
 
+sim::SimulatedRobot& LocalTarget::robot() {
+  auto& sim = session().simulation();
+  if (sim.robot_count() == 0) throw Error("the scene has no robot");
+  return sim.robot(selected_);
+}
+
 Runtime& LocalTarget::runtime() {
-  Runtime* rt = session().simulation().robot_count() > 0 ? session().runtime(0) : nullptr;
-  if (!rt) throw Error("robot 0 has no <controller> in this scene");
+  const std::string name = robot().name();
+  Runtime* rt = session().runtime(selected_);
+  if (!rt) throw Error("robot '" + name + "' has no <controller> in this scene");
   return *rt;
+}
+
+std::vector<std::string> LocalTarget::robot_names() {
+  auto& sim = session().simulation();
+  std::vector<std::string> names;
+  for (int i = 0; i < sim.robot_count(); ++i) names.push_back(sim.robot(i).name());
+  return names;
+}
+
+std::string LocalTarget::selected_robot() {
+  return robot().name();
+}
+
+void LocalTarget::select_robot(const std::string& name) {
+  const auto names = robot_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw Error("no robot '" + name +
+                "' in this scene (robots: " + (known.empty() ? std::string("none") : known) + ")");
+  }
+  selected_ = static_cast<int>(it - names.begin());
 }
 
 void LocalTarget::load(const std::string& scene_path) {
   auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
   session_ = std::move(fresh);
-  swapped_ = false;
+  selected_ = 0;
+  swapped_.clear();
   video_.stop();  // a recording belongs to the scene it started in
 }
 
 void LocalTarget::reset() {
   session().reset();
-  swapped_ = false;
+  swapped_.clear();
 }
 
 std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
@@ -88,8 +119,8 @@ std::string LocalTarget::sim_value(const std::string& key) {
   if (key == "sim.time") return number_text(sim.time());
   if (key == "sim.steps") return std::to_string(sim.steps());
   if (key == "sim.hash") return sim::hash_hex(sim.state_hash());
-  if (sim.robot_count() == 0) throw Error(key + ": the scene has no robot");
-  const auto& r = sim.robot(0);
+  if (key == "robot.name") return robot().name();
+  const auto& r = robot();
   if (key == "robot.fell") return r.fallen() ? "true" : "false";
   const sim::TorsoPose p = r.torso_pose();
   const std::pair<const char*, double> torso[] = {
@@ -102,7 +133,7 @@ std::string LocalTarget::sim_value(const std::string& key) {
   if (key == "robot.com.y") return number_text(com.y());
   if (key == "robot.com.z") return number_text(com.z());
   throw Error("unknown key '" + key +
-              "' (sim.time|steps|hash, robot.fell, robot.torso.x|y|z|roll|pitch|yaw, "
+              "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
               "robot.com.x|y|z, log.frames|mismatches|compared|replayed)");
 }
 
@@ -135,7 +166,10 @@ std::vector<std::string> LocalTarget::providers_available(const std::string& rep
 }
 void LocalTarget::swap_provider(const std::string& rep, const std::string& module) {
   runtime().swap_provider(rep, module);
-  swapped_ = module != "default";
+  if (module == "default")
+    swapped_.erase(selected_);
+  else
+    swapped_.insert(selected_);
 }
 std::vector<std::pair<std::string, bool>> LocalTarget::debug_requests() {
   return runtime().debug_requests();
@@ -182,9 +216,11 @@ void LocalTarget::log_export(const std::string& csv_path, const std::vector<std:
 
 ReplaySummary LocalTarget::log_replay() {
   if (!log_) throw Error("no log loaded (log load <file>)");
-  if (swapped_) throw Error("a provider was swapped; the replay uses the scene's configuration");
+  runtime();  // the selected robot has a controller
+  if (swapped_.count(selected_))
+    throw Error("a provider was swapped; the replay uses the scene's configuration");
   const ReplayResult r =
-      replay_and_compare(*log_, session().registry(), session().runtime_config(0));
+      replay_and_compare(*log_, session().registry(), session().runtime_config(selected_));
   ReplaySummary s;
   s.frames = r.frames;
   s.compared = r.compared.size();
@@ -204,19 +240,17 @@ std::string LocalTarget::report_json() {
 }
 
 void LocalTarget::push(const std::string& body, double fx, double fy, double fz, double seconds) {
-  auto& sim = session().simulation();
-  if (sim.robot_count() == 0) throw Error("the scene has no robot");
-  sim.push(sim.robot(0).name(), body, {fx, fy, fz}, Eigen::Vector3d::Zero(), seconds);
+  const std::string name = robot().name();
+  session().simulation().push(name, body, {fx, fy, fz}, Eigen::Vector3d::Zero(), seconds);
 }
 
 void LocalTarget::move_robot(double x, double y, double z, double yaw) {
-  sim::teleport_robot(session().simulation(), 0, {x, y, z}, yaw);
+  robot();  // throws without robots
+  sim::teleport_robot(session().simulation(), selected_, {x, y, z}, yaw);
 }
 
 void LocalTarget::sensor_switch(const std::string& which, bool on) {
-  auto& sim = session().simulation();
-  if (sim.robot_count() == 0) throw Error("the scene has no robot");
-  auto& s = sim.robot(0).sensor_switches();
+  auto& s = robot().sensor_switches();
   if (which == "noise")
     s.noise = on;
   else if (which == "delay")
@@ -233,12 +267,12 @@ render::WorldRenderer& LocalTarget::renderer() {
 }
 
 void LocalTarget::snapshot(const std::string& png_path, const std::string& view) {
-  render::write_snapshot(renderer(), session().simulation(), png_path, view);
+  render::write_snapshot(renderer(), session().simulation(), png_path, view, selected_);
 }
 
 void LocalTarget::video_start(const std::string& dir, const std::string& view,
                               std::uint64_t every_steps) {
-  video_.start(session().simulation(), dir, view, every_steps);
+  video_.start(session().simulation(), dir, view, every_steps, selected_);
 }
 
 std::uint64_t LocalTarget::video_stop() {

@@ -1,8 +1,9 @@
 #pragma once
-// The console target in this process: a SimSession (scene + controllers). Framework keys act on
-// robot 0's controller.
+// The console target in this process: a SimSession (scene + controllers). Robot and framework
+// keys act on the selected robot (`robot <name>`), the first one after load.
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "console/session/sim_session.hpp"
 #include "console/target/target.hpp"
@@ -23,6 +24,9 @@ class LocalTarget final : public Target {
   void reset() override;
   std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
   double step_seconds() const override;
+  std::vector<std::string> robot_names() override;
+  std::string selected_robot() override;
+  void select_robot(const std::string& name) override;
 
   std::string get(const std::string& key) override;
   const TypeDesc& type_of(const std::string& key) override;
@@ -57,6 +61,7 @@ class LocalTarget final : public Target {
 
  private:
   Runtime& runtime();
+  sim::SimulatedRobot& robot();  // the selected one; throws without robots
   render::WorldRenderer& renderer();
   std::string sim_value(const std::string& key);
 
@@ -65,7 +70,8 @@ class LocalTarget final : public Target {
   std::optional<ReplaySummary> replay_;
   std::unique_ptr<render::WorldRenderer> renderer_;  // made at the first picture
   render::VideoRecorder video_;
-  bool swapped_ = false;  // a provider swap makes the scene's configuration differ from the log's
+  int selected_ = 0;       // robot index
+  std::set<int> swapped_;  // robots whose providers differ from the scene's (a replay would not)
 };
 
 }  // namespace stride::console

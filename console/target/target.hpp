@@ -33,6 +33,12 @@ class Target {
   virtual std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) = 0;
   virtual double step_seconds() const = 0;
 
+  // The scene's robots, and the one that robot.* and framework keys, mr, dr, log, push, mv, sn
+  // and the built-in views act on (the first after load).
+  virtual std::vector<std::string> robot_names() = 0;
+  virtual std::string selected_robot() = 0;
+  virtual void select_robot(const std::string& name) = 0;
+
   // Values: representation:X[.path], module:X[.path], sim.time, sim.steps, sim.hash,
   // robot.torso.{x,y,z,roll,pitch,yaw}, robot.fell, robot.com.{x,y,z}, log.frames, log.mismatches,
   // provider:<Rep>.

@@ -18,9 +18,9 @@ const BuiltinView kBuiltins[] = {
     {"top", {0.0, 0.0, 1.3}},
 };
 
-Eigen::Vector3d framed_point(const sim::Simulation& sim) {
-  if (sim.robot_count() == 0) return Eigen::Vector3d(0, 0, 0.2);
-  const auto torso = sim.robot(0).torso_pose();
+Eigen::Vector3d framed_point(const sim::Simulation& sim, int robot) {
+  if (robot < 0 || robot >= sim.robot_count()) return Eigen::Vector3d(0, 0, 0.2);
+  const auto torso = sim.robot(robot).torso_pose();
   return Eigen::Vector3d(torso.x, torso.y, 0.25);  // mid-height of the robot, not the torso
 }
 
@@ -33,7 +33,7 @@ std::vector<std::string> view_names(const sim::Simulation& sim) {
   return out;
 }
 
-CameraView resolve_view(const sim::Simulation& sim, const std::string& name) {
+CameraView resolve_view(const sim::Simulation& sim, const std::string& name, int robot) {
   const std::string want = name.empty() ? "follow" : name;
   for (const sim::SceneCamera& c : sim.scene().cameras)
     if (c.name == want) {
@@ -48,7 +48,7 @@ CameraView resolve_view(const sim::Simulation& sim, const std::string& name) {
   for (const BuiltinView& b : kBuiltins)
     if (want == b.name) {
       CameraView v;
-      v.target = framed_point(sim);
+      v.target = framed_point(sim, robot);
       v.eye = v.target + b.offset;
       return v;
     }

@@ -46,6 +46,13 @@ TEST_F(CompletionTest, ProvidersSwitchesAndLogActions) {
   EXPECT_EQ(complete({"log"}, "re", target), (Words{"replay"}));
 }
 
+TEST(CompletionTwoRobots, RobotNames) {
+  LocalTarget two{STRIDE_SOURCE_DIR "/scenes/two_naos.xml"};
+  EXPECT_EQ(complete({"robot"}, "b", two), (Words{"blue"}));
+  EXPECT_EQ(complete({"robot"}, "", two), (Words{"?", "blue", "red"}));
+  EXPECT_EQ(complete({"get"}, "robot.na", two), (Words{"robot.name"}));
+}
+
 TEST_F(CompletionTest, FilePaths) {
   const auto dir = std::filesystem::temp_directory_path() / "stride_completion_test";
   std::filesystem::create_directories(dir / "sub");

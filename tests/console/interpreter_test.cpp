@@ -142,6 +142,14 @@ TEST_F(InterpreterTest, MoveSensorSwitchesAndPush) {
   EXPECT_NE(error_of("push no_such_link 5 0 0 0.1"), "");
 }
 
+TEST_F(InterpreterTest, RobotSelectionListsAndRejectsUnknownNames) {
+  EXPECT_EQ(run("robot"), "* nao\n");
+  const std::string err = error_of("robot green");
+  EXPECT_EQ(err, "no robot 'green' in this scene (robots: nao)");
+  EXPECT_EQ(target.get("robot.name"), "nao");  // unchanged
+  EXPECT_NE(error_of("robot a b").find("robot"), std::string::npos);
+}
+
 TEST_F(InterpreterTest, LogRecordReplayAndCompare) {
   const fs::path log = temp("stand.log");
   run("log start " + log.string());
