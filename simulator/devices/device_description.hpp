@@ -21,6 +21,9 @@ struct MotorSpec {
   // above) instead of the stiff velocity servo. 0 keeps the velocity servo.
   double spring = 0;   // N*m/rad at the joint, at stiffness 1
   double damping = 0;  // N*m*s/rad at the joint; 0 with a spring: back-EMF_damping()
+  // Opt-in gear play of the velocity servo: the joint moves freely within +-backlash/2 of the
+  // gear's output, which the servo drives; 0: no play.
+  double backlash = 0;  // rad
   // A voltage-driven DC motor brakes with its back-EMF: stall torque over no-load speed.
   double back_emf_damping() const { return stall_torque / no_load_speed; }
   double spring_damping() const { return damping > 0 ? damping : back_emf_damping(); }

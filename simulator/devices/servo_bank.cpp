@@ -21,6 +21,7 @@ ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, do
     motors_.push_back(&devices.motors[s.motor]);
   }
   commands_.resize(joints_.size());
+  for (int j : joints_) gear_angle_.push_back(body.joint_position(j));
   applied_torque_.assign(joints_.size(), 0);
   current_sum_.assign(joints_.size(), 0);
 }
@@ -38,7 +39,10 @@ void ServoBank::apply(const RobotBody& body) {
     const double max_torque = m.stall_torque * speed_factor;
     if (c.mode == hal::ServoMode::Position) {
       const double err = c.position - body.joint_position(j);
-      if (m.spring > 0) {
+      bool engaged = true;
+      if (m.backlash > 0) {
+        engaged = apply_with_backlash(id, s, body.joint_position(j), c);
+      } else if (m.spring > 0) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
         const double softness = 1.0 / (step_ * m.spring + m.spring_damping());
@@ -48,15 +52,34 @@ void ServoBank::apply(const RobotBody& body) {
         dJointSetHingeParam(id, dParamVel,
                             std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed));
       }
-      dJointSetHingeParam(id, dParamFMax, std::clamp(c.stiffness, 0.0, 1.0) * max_torque);
+      dJointSetHingeParam(id, dParamFMax,
+                          engaged ? std::clamp(c.stiffness, 0.0, 1.0) * max_torque : 0.0);
       applied_torque_[s] = 0;
     } else {
       dJointSetHingeParam(id, dParamFMax, 0);
+      gear_angle_[s] = body.joint_position(j);  // back-driven with the joint
       const double tau = std::clamp(c.torque, -max_torque, max_torque);
       dJointAddHingeTorque(id, tau);
       applied_torque_[s] = tau;
     }
   }
+}
+
+bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, const ServoCommand& c) {
+  const MotorSpec& m = *motors_[s];
+  // The gear's output follows the command at the servo's speed; the joint sits in its play.
+  double& gear = gear_angle_[s];
+  const double gear_speed =
+      std::clamp(m.gain * (c.position - gear), -m.no_load_speed, m.no_load_speed);
+  gear += gear_speed * step_;
+  const double half = 0.5 * m.backlash;
+  const double offset = q - gear;
+  if (std::abs(offset) <= half) return false;               // free within the play
+  const double tooth = gear + std::copysign(half, offset);  // the flank the joint pushes on
+  dJointSetHingeParam(
+      id, dParamVel,
+      std::clamp(gear_speed + m.gain * (tooth - q), -2 * m.no_load_speed, 2 * m.no_load_speed));
+  return true;
 }
 
 void ServoBank::measure(const RobotBody& body) {

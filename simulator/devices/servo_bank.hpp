@@ -39,12 +39,16 @@ class ServoBank {
   void take_mean_currents(std::vector<double>& out);
 
  private:
+  // Velocity servo through gear play: returns false while the joint is free within the play.
+  bool apply_with_backlash(dJointID id, std::size_t servo, double q, const ServoCommand& c);
+
   double step_;
   std::vector<int> joints_;  // model joint index per servo
   std::vector<const MotorSpec*> motors_;
   std::vector<int> servo_of_joint_;
   std::vector<ServoCommand> commands_;
   std::vector<double> applied_torque_;  // torque-mode torque of the current step
+  std::vector<double> gear_angle_;      // gear output angle per servo (rad), for backlash
   std::vector<double> current_sum_;
   int samples_ = 0;
 };

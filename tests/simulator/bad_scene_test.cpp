@@ -114,6 +114,8 @@ TEST(BadScene, MotorOverrides) {
                "expected a value > 0");
   expect_error(robot + R"(<motor name="pitch"/></robot></scene>)", "bad.xml:3",
                "at least one motor attribute");
+  expect_error(robot + R"(<motor name="pitch" spring="100" backlash="1deg"/></robot></scene>)",
+               "bad.xml:3", "backlash is only for the velocity servo");
   expect_error(
       "<scene>\n<robot " + kNao + ">\n" + R"(<motor name="pitch" gain="5"/></robot></scene>)",
       "bad.xml:3", "there is none");

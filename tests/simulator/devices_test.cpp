@@ -75,6 +75,28 @@ TEST(Devices, CompliantServoDampingSetsTheOvershoot) {
   EXPECT_GT(overshoot("0.12"), 0.05);
 }
 
+// With gear play b, gravity leans the hung leg on one flank of the gear: the joint settles b / 2
+// from the target, on the side gravity pulls it to; the stiff servo holds the target.
+TEST(Devices, BacklashLetsGravityTakeUpHalfThePlay) {
+  const double play = 2 * std::numbers::pi / 180;
+  auto sim = test::scene_from_text(hung_nao_with(R"(<motor name="pitch" backlash="2deg"/>)"));
+  auto& robot = sim->robot(0);
+  sim->run_for(2.0);
+  const int j = robot.model().joint_index("LHipPitch");
+  const double q = robot.body().joint_position(j);
+  const double tau = sim::gravity_torque_about_joint(robot.body(), "LHipPitch",
+                                                     {"LThigh", "LTibia", "LAnkle", "LFoot"});
+  // Gravity turns the raised leg (hip pitch -0.6) back towards hanging: towards larger angles.
+  EXPECT_GT(std::abs(tau), 0.3);
+  EXPECT_NEAR(q, -0.6 + play / 2, 0.1 * play);
+  // Within the play the joint is free: a small push moves it without the servo resisting.
+  hal::ActuatorFrame cmd = robot.latest_commands();
+  cmd.position[hal::index(JointId::LHipPitch)] = -0.6 + play;  // gear moves by the whole play
+  robot.write(cmd);
+  sim->run_for(1.0);
+  EXPECT_NEAR(robot.body().joint_position(j), -0.6 + 1.5 * play, 0.1 * play);
+}
+
 TEST(Devices, TorqueModeWithZeroTorqueLetsTheLegSwingDown) {
   auto sim = test::scene_from_text(hanging_nao(R"(LHipPitch="-0.6")"));
   auto& robot = sim->robot(0);
