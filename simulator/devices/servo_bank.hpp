@@ -1,7 +1,7 @@
 #pragma once
-// NAO-like servos on a RobotBody: a velocity-servo position controller (or, opt-in, a compliant
-// spring-damper one) whose torque is bounded by stiffness x the motor's speed-dependent torque,
-// or a direct torque command.
+// NAO-like servos on a RobotBody: a velocity-servo position controller (opt-in: with gear play,
+// or a compliant spring-damper instead) whose torque is bounded by stiffness x the motor's
+// speed-dependent torque, or a direct torque command.
 #include <vector>
 
 #include "robot/hal/actuator_frame.hpp"
