@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
 # Floor roughness x strategy x speed x seed for the Sec. 4.3.4.2 walks: copies of the
 # {none,hip,ankle}_{slow,medium,fast} scenes with the <uneven> patch's height and tilt replaced
-# (or removed: "flat"), each run with `stride run` and summarised from its report. A spring
-# (N*m/rad) gives the leg motors (roll, pitch) the opt-in compliant servo (<motor> in <robot>).
-#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] [spring]
+# (or removed: "flat"), each run with `stride run` and summarised from its report. Motor
+# attributes (name=value ...) change the leg motors (roll, pitch) through <motor> in <robot>.
+#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] ["attr=value ..."]
 #   e.g. floor_sweep.sh build/stride "flat 1mm:0.5deg 3mm:1deg 4.5mm:1.5deg 6mm:2deg" 3
-#        floor_sweep.sh build/stride 3mm:1deg 3 200
+#        floor_sweep.sh build/stride 3mm:1deg 3 spring=150
+#        floor_sweep.sh build/stride 3mm:1deg 6 backlash=2deg
 # Prints one line per walk: floor strategy speed seed fell steps true-distance max|pitch| max|roll|.
 set -euo pipefail
 stride=$(realpath "$1")
 floors=$2
 seeds=${3:-3}
-spring=${4:-}
+motor=""
+for pair in ${4:-}; do motor+=" ${pair%%=*}=\"${pair#*=}\""; done
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -20,8 +22,8 @@ for floor in $floors; do
     for speed in slow medium fast; do
       scene=$tmp/${strategy}_${speed}.xml
       sed "s#\.\./robots/#$here/../robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
-      if [[ -n $spring ]]; then
-        sed -i "s#</robot>#<motor name=\"roll\" spring=\"$spring\"/><motor name=\"pitch\" spring=\"$spring\"/></robot>#" "$scene"
+      if [[ -n $motor ]]; then
+        sed -i "s#</robot>#<motor name=\"roll\"$motor/><motor name=\"pitch\"$motor/></robot>#" "$scene"
       fi
       if [[ $floor == flat ]]; then
         sed -i '/<uneven /d' "$scene"
