@@ -27,6 +27,7 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   if (lfoot_ < 0 || rfoot_ < 0) return;  // walking figures only for robots with NAO feet
   const double xl = robot.body().link_pose(lfoot_).translation().x();
   const double xr = robot.body().link_pose(rfoot_).translation().x();
+  const double frame = started_ ? s.time - t_ : 0.0;
   t_ = s.time;
   x_mid_ = 0.5 * (xl + xr);
   x_torso_ = torso.x;
@@ -48,6 +49,7 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   }
   const double left = s.fsr[0] + s.fsr[1] + s.fsr[2] + s.fsr[3];
   const double right = s.fsr[4] + s.fsr[5] + s.fsr[6] + s.fsr[7];
+  observe_feet(robot, left, right, frame);
   const bool both = left > threshold_ && right > threshold_;
   const bool one = (left > threshold_) != (right > threshold_);
   if (one) in_single_support_ = true;
@@ -59,8 +61,39 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   }
 }
 
+void WalkMetrics::observe_feet(const SimulatedRobot& robot, double left_load, double right_load,
+                               double frame) {
+  const int links[2] = {lfoot_, rfoot_};
+  const double loads[2] = {left_load, right_load};
+  for (int f = 0; f < 2; ++f) {
+    const Eigen::Isometry3d sole = robot.body().link_pose(links[f]);
+    const Eigen::Vector2d xy = sole.translation().head<2>();
+    const bool loaded = loads[f] > threshold_;
+    // Per stance, from loading to unloading: the net displacement, so that contact jitter of a
+    // few micrometres per frame does not add up.
+    if (loaded && !stance_[f].active) stance_[f] = {true, xy, xy};
+    if (loaded) stance_[f].last = xy;
+    if (!loaded && stance_[f].active) {
+      close_stance(stance_[f], r_);
+      stance_[f].active = false;
+    }
+    if (loaded) {
+      const double tilt = std::acos(std::clamp(sole.linear()(2, 2), -1.0, 1.0));
+      r_.foot_tilt_max = std::max(r_.foot_tilt_max, tilt);
+      if (tilt > kTiltedFoot) r_.foot_tilted_time += frame;
+    }
+  }
+}
+
+void WalkMetrics::close_stance(const Stance& s, WalkMetricsResult& r) {
+  r.foot_slip += (s.last - s.start).norm();
+  r.foot_slip_net_x += s.last.x() - s.start.x();
+}
+
 WalkMetricsResult WalkMetrics::result() const {
   WalkMetricsResult r = r_;
+  for (const Stance& s : stance_)
+    if (s.active) close_stance(s, r);  // a stance still going on counts up to now
   r.duration = t_ - t0_;
   r.true_distance = x_mid_ - x0_mid_;
   r.torso_distance = x_torso_ - x0_torso_;
@@ -80,7 +113,9 @@ std::string walk_metrics_text(const WalkMetricsResult& r) {
     << " m (torso " << r.torso_distance << " m) in " << r.duration << " s  speed fk " << r.fk_speed
     << " m/s, true " << r.true_speed << " m/s  step " << r.mean_step_length << " m  pitch ["
     << r.pitch_min << ", " << r.pitch_max << "] roll [" << r.roll_min << ", " << r.roll_max
-    << "] rad  " << (r.fell ? "FELL" : "did not fall");
+    << "] rad  feet: slip " << r.foot_slip << " m (net x " << r.foot_slip_net_x << " m), tilt max "
+    << r.foot_tilt_max << " rad, tilted " << r.foot_tilted_time << " s  "
+    << (r.fell ? "FELL" : "did not fall");
   if (r.fell) o << " at " << r.fell_at << " s";
   return o.str();
 }

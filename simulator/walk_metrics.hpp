@@ -2,7 +2,8 @@
 // What a walking experiment reports, observed every control frame of one robot: steps, distance
 // and speed both as the thesis measured them on the robot (forward kinematics between the feet in
 // each double support, from the measured joint angles) and from the simulator's ground truth,
-// average step length, torso pitch/roll extremes, and whether it fell.
+// average step length, torso pitch/roll extremes, whether it fell, and how the feet behaved while
+// they carried load (sliding, tilting on an edge): the ground truth behind a distance.
 #include <string>
 
 #include "simulator/simulated_robot.hpp"
@@ -19,8 +20,16 @@ struct WalkMetricsResult {
   double mean_step_length = 0;          // m, ground truth
   double pitch_min = 0, pitch_max = 0, roll_min = 0, roll_max = 0;  // rad, torso
   bool fell = false;
-  double fell_at = -1;  // s
+  double fell_at = -1;          // s
+  double foot_slip = 0;         // m, summed horizontal displacement of each foot per stance
+  double foot_slip_net_x = 0;   // m, signed forward part of it (negative: feet slid back)
+  double foot_tilt_max = 0;     // rad, largest sole tilt from the vertical while loaded
+  double foot_tilted_time = 0;  // s, time a loaded foot was tilted by more than kTiltedFoot
 };
+
+// A loaded sole tilted beyond this rocks on an edge rather than standing flat (1.15 deg; the
+// default uneven floor's tiles tilt up to 1 deg).
+inline constexpr double kTiltedFoot = 0.02;
 
 class WalkMetrics {
  public:
@@ -29,12 +38,20 @@ class WalkMetrics {
   WalkMetricsResult result() const;
 
  private:
+  struct Stance {  // one foot's current loaded interval
+    bool active = false;
+    Eigen::Vector2d start = Eigen::Vector2d::Zero(), last = Eigen::Vector2d::Zero();
+  };
+  void observe_feet(const SimulatedRobot& robot, double left_load, double right_load, double frame);
+  static void close_stance(const Stance& s, WalkMetricsResult& r);
+
   double threshold_;
   int lfoot_ = -2, rfoot_ = -2;  // link indices, looked up on the first frame (-1: no such link)
   bool started_ = false;
   double t0_ = 0, t_ = 0;
   double x0_mid_ = 0, x0_torso_ = 0, x_mid_ = 0, x_torso_ = 0;
   bool in_single_support_ = false;
+  Stance stance_[2];
   WalkMetricsResult r_;
 };
 
