@@ -122,11 +122,31 @@ void PhysicsWorld::collide_pair(dGeomID g1, dGeomID g2) {
   }
 }
 
+void PhysicsWorld::collide_with_static() {
+  const int moving = dSpaceGetNumGeoms(robot_space_);
+  const int fixed = dSpaceGetNumGeoms(static_space_);
+  if (moving >= fixed) {  // few static geoms: ODE's pairing is as cheap, and its order is ours
+    dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_),
+                   reinterpret_cast<dGeomID>(static_space_), this, &near_callback);
+    return;
+  }
+  // ODE would take each robot geom in list order against every static geom in list order; the
+  // grid yields the overlapping ones in that same order.
+  if (!static_grid_ || static_grid_->size() != fixed)
+    static_grid_ = std::make_unique<StaticGeomGrid>(static_space_);
+  for (int i = 0; i < moving; ++i) {
+    dGeomID g = dSpaceGetGeom(robot_space_, i);
+    dReal box[6];
+    dGeomGetAABB(g, box);
+    static_grid_->overlapping(box, candidates_);
+    for (dGeomID s : candidates_) collide_pair(g, s);
+  }
+}
+
 void PhysicsWorld::step() {
   contacts_.clear();
   dSpaceCollide(robot_space_, this, &near_callback);
-  dSpaceCollide2(reinterpret_cast<dGeomID>(robot_space_), reinterpret_cast<dGeomID>(static_space_),
-                 this, &near_callback);
+  collide_with_static();
   // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each
   // other.
   dRandSetSeed(rand_state_);

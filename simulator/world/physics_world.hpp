@@ -10,6 +10,7 @@
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/world/contact_record.hpp"
 #include "simulator/world/geom_info.hpp"
+#include "simulator/world/static_geom_grid.hpp"
 
 namespace stride::sim {
 
@@ -42,6 +43,7 @@ class PhysicsWorld {
  private:
   static void near_callback(void* data, dGeomID g1, dGeomID g2);
   void collide_pair(dGeomID g1, dGeomID g2);
+  void collide_with_static();
 
   PhysicsSettings physics_;
   dWorldID world_ = nullptr;
@@ -53,6 +55,8 @@ class PhysicsWorld {
   std::vector<ContactRecord> contacts_;
   std::function<bool(const GeomInfo&, const GeomInfo&)> self_filter_;
   int static_geoms_ = 0;
+  std::unique_ptr<StaticGeomGrid> static_grid_;  // built on the first step, when all are placed
+  std::vector<dGeomID> candidates_;
   unsigned long rand_state_ = 0;  // ODE's solver shuffles with a process-wide generator
 };
 
