@@ -45,6 +45,8 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
     j.field("fell", w.fell).field("fell_at", w.fell_at);
     j.field("foot_slip", w.foot_slip).field("foot_slip_net_x", w.foot_slip_net_x);
     j.field("foot_tilt_max", w.foot_tilt_max).field("foot_tilted_time", w.foot_tilted_time);
+    j.field("foot_spin", w.foot_spin).field("foot_spin_max", w.foot_spin_max);
+    j.field("yaw_min", w.yaw_min).field("yaw_max", w.yaw_max);
     j.end_object();
     j.end_object();
   }

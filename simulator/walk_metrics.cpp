@@ -9,6 +9,14 @@
 namespace stride::sim {
 namespace {
 
+double heading(const Eigen::Matrix3d& r) {
+  return std::atan2(r(1, 0), r(0, 0));
+}
+
+double wrapped(double a) {  // to (-pi, pi]
+  return std::remainder(a, 2 * M_PI);
+}
+
 double sole_x_from_fk(const hal::SensorFrame& s, model::Side side) {
   model::LegAngles q{};
   model::gather_chain(model::leg_chain(side), s.position, q);
@@ -38,7 +46,12 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
     x0_torso_ = torso.x;
     r_.pitch_min = r_.pitch_max = torso.pitch;
     r_.roll_min = r_.roll_max = torso.roll;
+    torso_yaw_ = torso.yaw;
   }
+  torso_turned_ += wrapped(torso.yaw - torso_yaw_);
+  torso_yaw_ = torso.yaw;
+  r_.yaw_min = std::min(r_.yaw_min, torso_turned_);
+  r_.yaw_max = std::max(r_.yaw_max, torso_turned_);
   r_.pitch_min = std::min(r_.pitch_min, torso.pitch);
   r_.pitch_max = std::max(r_.pitch_max, torso.pitch);
   r_.roll_min = std::min(r_.roll_min, torso.roll);
@@ -71,8 +84,14 @@ void WalkMetrics::observe_feet(const SimulatedRobot& robot, double left_load, do
     const bool loaded = loads[f] > threshold_;
     // Per stance, from loading to unloading: the net displacement, so that contact jitter of a
     // few micrometres per frame does not add up.
-    if (loaded && !stance_[f].active) stance_[f] = {true, xy, xy};
-    if (loaded) stance_[f].last = xy;
+    const double yaw = heading(sole.linear());
+    Stance& st = stance_[f];
+    if (loaded && !st.active) st = {true, xy, xy, yaw, 0.0};
+    if (loaded) {
+      st.last = xy;
+      st.turned += wrapped(yaw - st.yaw);
+      st.yaw = yaw;
+    }
     if (!loaded && stance_[f].active) {
       close_stance(stance_[f], r_);
       stance_[f].active = false;
@@ -88,6 +107,8 @@ void WalkMetrics::observe_feet(const SimulatedRobot& robot, double left_load, do
 void WalkMetrics::close_stance(const Stance& s, WalkMetricsResult& r) {
   r.foot_slip += (s.last - s.start).norm();
   r.foot_slip_net_x += s.last.x() - s.start.x();
+  r.foot_spin += std::abs(s.turned);
+  r.foot_spin_max = std::max(r.foot_spin_max, std::abs(s.turned));
 }
 
 WalkMetricsResult WalkMetrics::result() const {
@@ -113,8 +134,9 @@ std::string walk_metrics_text(const WalkMetricsResult& r) {
     << " m (torso " << r.torso_distance << " m) in " << r.duration << " s  speed fk " << r.fk_speed
     << " m/s, true " << r.true_speed << " m/s  step " << r.mean_step_length << " m  pitch ["
     << r.pitch_min << ", " << r.pitch_max << "] roll [" << r.roll_min << ", " << r.roll_max
-    << "] rad  feet: slip " << r.foot_slip << " m (net x " << r.foot_slip_net_x << " m), tilt max "
-    << r.foot_tilt_max << " rad, tilted " << r.foot_tilted_time << " s  "
+    << "] yaw [" << r.yaw_min << ", " << r.yaw_max << "] rad  feet: slip " << r.foot_slip
+    << " m (net x " << r.foot_slip_net_x << " m), tilt max " << r.foot_tilt_max << " rad, tilted "
+    << r.foot_tilted_time << " s, spin " << r.foot_spin << " rad (max " << r.foot_spin_max << ")  "
     << (r.fell ? "FELL" : "did not fall");
   if (r.fell) o << " at " << r.fell_at << " s";
   return o.str();

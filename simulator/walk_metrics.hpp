@@ -19,12 +19,15 @@ struct WalkMetricsResult {
   double fk_speed = 0, true_speed = 0;  // m/s
   double mean_step_length = 0;          // m, ground truth
   double pitch_min = 0, pitch_max = 0, roll_min = 0, roll_max = 0;  // rad, torso
+  double yaw_min = 0, yaw_max = 0;  // rad, torso heading (unwrapped) relative to the first frame
   bool fell = false;
   double fell_at = -1;          // s
   double foot_slip = 0;         // m, summed horizontal displacement of each foot per stance
   double foot_slip_net_x = 0;   // m, signed forward part of it (negative: feet slid back)
   double foot_tilt_max = 0;     // rad, largest sole tilt from the vertical while loaded
   double foot_tilted_time = 0;  // s, time a loaded foot was tilted by more than kTiltedFoot
+  double foot_spin = 0;         // rad, summed |net yaw turn| of each foot per stance (Sec. 4.4)
+  double foot_spin_max = 0;     // rad, the largest turn of one foot in one stance
 };
 
 // A loaded sole tilted beyond this rocks on an edge rather than standing flat (1.15 deg; the
@@ -41,6 +44,8 @@ class WalkMetrics {
   struct Stance {  // one foot's current loaded interval
     bool active = false;
     Eigen::Vector2d start = Eigen::Vector2d::Zero(), last = Eigen::Vector2d::Zero();
+    double yaw = 0;     // rad, the foot's heading at the last loaded frame
+    double turned = 0;  // rad, unwrapped net yaw change since loading
   };
   void observe_feet(const SimulatedRobot& robot, double left_load, double right_load, double frame);
   static void close_stance(const Stance& s, WalkMetricsResult& r);
@@ -52,6 +57,7 @@ class WalkMetrics {
   double x0_mid_ = 0, x0_torso_ = 0, x_mid_ = 0, x_torso_ = 0;
   bool in_single_support_ = false;
   Stance stance_[2];
+  double torso_yaw_ = 0, torso_turned_ = 0;  // last heading; unwrapped change since the start
   WalkMetricsResult r_;
 };
 

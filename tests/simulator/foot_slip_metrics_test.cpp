@@ -1,9 +1,11 @@
 // The walk report's foot figures against closed form: a NAO sliding to rest on low friction
-// covers v0^2 / (2 mu g), a standing NAO's feet neither slide nor tilt.
+// covers v0^2 / (2 mu g), a standing NAO's feet neither slide, tilt nor turn, and turning the
+// standing robot in place turns each loaded foot by that angle.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "simulator/teleport.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {
@@ -25,6 +27,23 @@ TEST(FootSlipMetrics, StandingFeetNeitherSlideNorTilt) {
   EXPECT_LT(r.foot_slip, 1e-3);
   EXPECT_LT(r.foot_tilt_max, 0.01);
   EXPECT_EQ(r.foot_tilted_time, 0.0);
+  EXPECT_LT(r.foot_spin, 1e-3);
+  EXPECT_LT(r.yaw_max - r.yaw_min, 1e-3);
+}
+
+TEST(FootSlipMetrics, TurningTheStandingRobotTurnsEachLoadedFootByTheAngle) {
+  auto sim = test::scene_from_text(stand_scene(0.8));
+  sim->run_for(0.5);
+  const auto before = sim->walk_metrics(0).result();
+  const auto torso = sim->robot(0).torso_pose();
+  sim::teleport_robot(*sim, 0, Eigen::Vector3d(torso.x, torso.y, torso.z),
+                      0.3);  // within one stance
+  sim->run_for(0.5);
+  const auto r = sim->walk_metrics(0).result();
+  EXPECT_NEAR(r.foot_spin - before.foot_spin, 2 * 0.3, 0.01);
+  EXPECT_NEAR(r.foot_spin_max, 0.3, 0.005);
+  EXPECT_NEAR(r.yaw_max, 0.3, 0.005);
+  EXPECT_FALSE(sim->robot(0).fallen());
 }
 
 TEST(FootSlipMetrics, SlidingRobotCoversTheCoulombStoppingDistance) {
