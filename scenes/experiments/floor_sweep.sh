@@ -2,11 +2,13 @@
 # Floor roughness x strategy x speed x seed for the Sec. 4.3.4.2 walks: copies of the
 # {none,hip,ankle}_{slow,medium,fast} scenes with the <uneven> patch's height and tilt replaced
 # (or removed: "flat"), each run with `stride run` and summarised from its report. Motor
-# attributes (name=value ...) change the leg motors (roll, pitch) through <motor> in <robot>.
-#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] ["attr=value ..."]
+# attributes (name=value ...) change the leg motors (roll, pitch) through <motor> in <robot>;
+# a fifth argument "arm-swing" turns on the yaw-moment arm swing of Sec. 4.4 in every walk.
+#   scenes/experiments/floor_sweep.sh <stride> "<height>:<tilt> ..." [seeds] ["attr=value ..."] [arm-swing]
 #   e.g. floor_sweep.sh build/stride "flat 1mm:0.5deg 3mm:1deg 4.5mm:1.5deg 6mm:2deg" 3
 #        floor_sweep.sh build/stride 3mm:1deg 3 spring=150
 #        floor_sweep.sh build/stride 3mm:1deg 6 backlash=2deg
+#        floor_sweep.sh build/stride 3mm:1deg 12 backlash=2deg arm-swing
 # Prints one line per walk: floor strategy speed seed fell steps true-distance max|pitch| max|roll|.
 set -euo pipefail
 stride=$(realpath "$1")
@@ -14,6 +16,11 @@ floors=$2
 seeds=${3:-3}
 motor=""
 for pair in ${4:-}; do motor+=" ${pair%%=*}=\"${pair#*=}\""; done
+arm_swing=${5:-}
+if [[ -n $arm_swing && $arm_swing != arm-swing ]]; then
+  echo "floor_sweep.sh: fifth argument: expected 'arm-swing', got '$arm_swing'" >&2
+  exit 2
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -24,6 +31,9 @@ for floor in $floors; do
       sed "s#\.\./robots/#$here/../robots/#g" "$here/${strategy}_${speed}.xml" > "$scene"
       if [[ -n $motor ]]; then
         sed -i "s#</robot>#<motor name=\"roll\"$motor/><motor name=\"pitch\"$motor/></robot>#" "$scene"
+      fi
+      if [[ -n $arm_swing ]]; then
+        sed -i 's#field="gain_scale" value="0"#field="gain_scale" value="1"#' "$scene"
       fi
       if [[ $floor == flat ]]; then
         sed -i '/<uneven /d' "$scene"
