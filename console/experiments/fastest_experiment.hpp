@@ -14,7 +14,8 @@ namespace stride::experiments {
 // One setting tried at a target speed: PatternWalk, HipStrategy and ArmSwing parameters.
 struct FastWalkSetting {
   double T_stride, z_min, z_max, H_foot, kp, kd;
-  double arm_swing;  // ArmSwing gain_scale: Sec. 4.4's yaw-moment compensation on (1) or off
+  double arm_swing;      // ArmSwing gain_scale: Sec. 4.4's yaw-moment compensation on (1) or off
+  const char* strategy;  // the PostureCorrectedRequest provider: HipStrategy or AnkleStrategy
 };
 const std::vector<FastWalkSetting>& fast_walk_settings();
 
