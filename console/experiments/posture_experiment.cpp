@@ -92,7 +92,8 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
   const int seeds = o.seeds > 0 ? o.seeds : 1;
   const bool files = prepare_out_dir(o);
   plot::Table summary{{"case", "seed", "steps", "distance", "fk_distance", "speed", "step_length",
-                       "pitch_min", "pitch_max", "roll_min", "roll_max", "fell"}};
+                       "pitch_min", "pitch_max", "roll_min", "roll_max", "fell", "foot_slip",
+                       "foot_slip_net_x", "foot_tilted_time", "foot_spin", "yaw_min", "yaw_max"}};
   std::vector<std::vector<std::string>> rows;
   std::vector<WalkSetup> setups;
   for (const PostureCase& c : posture_cases())
@@ -105,7 +106,9 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
     const WalkSummary s = summarize(r);
     summary.add_row({double(k), double(seed), double(s.steps), s.distance, s.fk_distance, s.speed,
                      s.step_length, s.pitch_min, s.pitch_max, s.roll_min, s.roll_max,
-                     s.fell ? 1.0 : 0.0});
+                     s.fell ? 1.0 : 0.0, r.metrics.foot_slip, r.metrics.foot_slip_net_x,
+                     r.metrics.foot_tilted_time, r.metrics.foot_spin, r.metrics.yaw_min,
+                     r.metrics.yaw_max});
     rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
                     fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
                     fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
