@@ -82,24 +82,21 @@ void WalkMetrics::observe_feet(const SimulatedRobot& robot, double left_load, do
     const Eigen::Isometry3d sole = robot.body().link_pose(links[f]);
     const Eigen::Vector2d xy = sole.translation().head<2>();
     const bool loaded = loads[f] > threshold_;
-    // Per stance, from loading to unloading: the net displacement, so that contact jitter of a
-    // few micrometres per frame does not add up.
     const double yaw = heading(sole.linear());
+    // Per stance, from loading to unloading: net displacement and turn, so that contact jitter of
+    // a few micrometres per frame does not add up.
     Stance& st = stance_[f];
     if (loaded && !st.active) st = {true, xy, xy, yaw, 0.0};
     if (loaded) {
       st.last = xy;
       st.turned += wrapped(yaw - st.yaw);
       st.yaw = yaw;
-    }
-    if (!loaded && stance_[f].active) {
-      close_stance(stance_[f], r_);
-      stance_[f].active = false;
-    }
-    if (loaded) {
       const double tilt = std::acos(std::clamp(sole.linear()(2, 2), -1.0, 1.0));
       r_.foot_tilt_max = std::max(r_.foot_tilt_max, tilt);
       if (tilt > kTiltedFoot) r_.foot_tilted_time += frame;
+    } else if (st.active) {
+      close_stance(st, r_);
+      st.active = false;
     }
   }
 }
