@@ -15,14 +15,12 @@ settings=$3
 seeds=${4:-1}
 seconds=${5:-17.05}
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 # The copy lives next to the original so that its relative paths still resolve.
-dir=$(dirname "$source_scene")
+scene=$(dirname "$source_scene")/.solver_sweep_$$.xml
+trap 'rm -rf "$tmp" "$scene"' EXIT
 for setting in $settings; do
   attrs=""
   for pair in ${setting//,/ }; do attrs+=" ${pair%%=*}=\"${pair#*=}\""; done
-  scene=$dir/.solver_sweep_$$.xml
-  trap 'rm -rf "$tmp" "$scene"' EXIT
   sed -E "s#<physics([ />])#<physics$attrs\1#" "$source_scene" > "$scene"
   for ((seed = 1; seed <= seeds; ++seed)); do
     "$stride" run "$scene" --seconds "$seconds" --seed "$seed" --report "$tmp/r.json" > /dev/null
@@ -32,5 +30,4 @@ print(*sys.argv[2:], "fell" if w["fell"] or r["fell"] else "up", w["steps"],
                                "foot_tilt_max", "foot_tilted_time")),
       "%.3f" % r["torso"]["yaw"], "%.2f" % j["wall_time"])' "$tmp/r.json" "$setting" "$seed"
   done
-  rm -f "$scene"
 done

@@ -30,17 +30,26 @@ std::string hung_nao_with(const std::string& motor) {
          motor + "</robot></scene>";
 }
 
+// The hung left leg's hip after `seconds`: its angle and the gravity torque about it.
+struct HungHip {
+  int joint;
+  double q, tau;
+};
+HungHip settle_hung_hip(sim::Simulation& sim, double seconds) {
+  sim.run_for(seconds);
+  auto& robot = sim.robot(0);
+  const int j = robot.model().joint_index("LHipPitch");
+  return {j, robot.body().joint_position(j),
+          sim::gravity_torque_about_joint(robot.body(), "LHipPitch",
+                                          {"LThigh", "LTibia", "LAnkle", "LFoot"})};
+}
+
 // A spring of K N*m/rad sags under the hung leg's gravity torque tau by tau / K, where the
 // velocity servo holds the target exactly.
 TEST(Devices, CompliantServoSagsByGravityTorqueOverSpring) {
   const double spring = 60;
   auto sim = test::scene_from_text(hung_nao_with(R"(<motor name="pitch" spring="60"/>)"));
-  auto& robot = sim->robot(0);
-  sim->run_for(3.0);
-  const int j = robot.model().joint_index("LHipPitch");
-  const double q = robot.body().joint_position(j);
-  const double tau = sim::gravity_torque_about_joint(robot.body(), "LHipPitch",
-                                                     {"LThigh", "LTibia", "LAnkle", "LFoot"});
+  const auto [j, q, tau] = settle_hung_hip(*sim, 3.0);
   EXPECT_GT(std::abs(tau), 0.3);
   // The servo's torque balances gravity: spring * (target - q) + tau = 0.
   EXPECT_NEAR(spring * (-0.6 - q), -tau, 0.02 * std::abs(tau));
@@ -81,11 +90,7 @@ TEST(Devices, BacklashLetsGravityTakeUpHalfThePlay) {
   const double play = 2 * std::numbers::pi / 180;
   auto sim = test::scene_from_text(hung_nao_with(R"(<motor name="pitch" backlash="2deg"/>)"));
   auto& robot = sim->robot(0);
-  sim->run_for(2.0);
-  const int j = robot.model().joint_index("LHipPitch");
-  const double q = robot.body().joint_position(j);
-  const double tau = sim::gravity_torque_about_joint(robot.body(), "LHipPitch",
-                                                     {"LThigh", "LTibia", "LAnkle", "LFoot"});
+  const auto [j, q, tau] = settle_hung_hip(*sim, 2.0);
   // Gravity turns the raised leg (hip pitch -0.6) back towards hanging: towards larger angles.
   EXPECT_GT(std::abs(tau), 0.3);
   EXPECT_NEAR(q, -0.6 + play / 2, 0.1 * play);
