@@ -145,7 +145,9 @@ void PhysicsWorld::collide_with_static() {
 
 void PhysicsWorld::step() {
   contacts_.clear();
-  dSpaceCollide(robot_space_, this, &near_callback);
+  if (self_candidates_.geom_count() != dSpaceGetNumGeoms(robot_space_))
+    self_candidates_.rebuild(robot_space_);
+  if (self_candidates_.any_overlap()) dSpaceCollide(robot_space_, this, &near_callback);
   collide_with_static();
   // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each
   // other.

@@ -10,6 +10,7 @@
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/world/contact_record.hpp"
 #include "simulator/world/geom_info.hpp"
+#include "simulator/world/self_contact_candidates.hpp"
 #include "simulator/world/static_geom_grid.hpp"
 
 namespace stride::sim {
@@ -55,6 +56,7 @@ class PhysicsWorld {
   std::vector<ContactRecord> contacts_;
   std::function<bool(const GeomInfo&, const GeomInfo&)> self_filter_;
   int static_geoms_ = 0;
+  SelfContactCandidates self_candidates_;        // rebuilt when the robot geom count changes
   std::unique_ptr<StaticGeomGrid> static_grid_;  // built on the first step, when all are placed
   std::vector<dGeomID> candidates_;
   unsigned long rand_state_ = 0;  // ODE's solver shuffles with a process-wide generator
