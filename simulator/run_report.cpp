@@ -13,11 +13,21 @@ std::string hash_hex(std::uint64_t h) {
   return buf;
 }
 
+std::string solver_text(const PhysicsSettings& physics) {
+  if (physics.solver == PhysicsSettings::Solver::Exact) return "exact";
+  std::ostringstream o;
+  o << "iterative " << physics.iterations;
+  if (physics.sor != 1.3) o << " sor " << physics.sor;
+  return o.str();
+}
+
 std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   JsonWriter j;
   j.begin_object();
   j.field("scene", sim.scene().name);
   j.field("seed", static_cast<long long>(sim.scene().physics.seed));
+  // Results depend on the solver setting (README "Solver settings"), so every report names it.
+  j.field("solver", solver_text(sim.scene().physics));
   j.field("sim_time", sim.time());
   j.field("wall_time", timing.wall_time);
   j.field("real_time_factor", timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0);
@@ -59,8 +69,9 @@ std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
   std::ostringstream o;
   o.setf(std::ios::fixed);
   o.precision(3);
-  o << "scene " << sim.scene().name << "  seed " << sim.scene().physics.seed << "  sim "
-    << sim.time() << " s  wall " << timing.wall_time << " s  ";
+  o << "scene " << sim.scene().name << "  seed " << sim.scene().physics.seed << "  solver "
+    << solver_text(sim.scene().physics) << "  sim " << sim.time() << " s  wall " << timing.wall_time
+    << " s  ";
   o.precision(1);
   o << (timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0) << "x real time  hash "
     << hash_hex(sim.state_hash()) << "\n";

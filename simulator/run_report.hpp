@@ -13,5 +13,7 @@ struct RunTiming {
 std::string run_report_json(const Simulation& sim, const RunTiming& timing);
 std::string run_report_text(const Simulation& sim, const RunTiming& timing);
 std::string hash_hex(std::uint64_t h);
+// "exact", or "iterative <n>" (with " sor <w>" when not ODE's 1.3).
+std::string solver_text(const PhysicsSettings& physics);
 
 }  // namespace stride::sim

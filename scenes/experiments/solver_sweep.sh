@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One walk scene under several solver settings: copies of the scene with attributes added to its
+# One walk scene under several solver settings: copies of the scene with attributes set in its
 # <physics> element, each run with `stride run` and summarised from its report. Shows how much a
 # walk's distance owes to the solver (sliding of loaded feet, feet rocking on an edge).
 #   scenes/experiments/solver_sweep.sh <stride> <scene> "<setting> ..." [seeds] [seconds]
@@ -20,8 +20,12 @@ scene=$(dirname "$source_scene")/.solver_sweep_$$.xml
 trap 'rm -rf "$tmp" "$scene"' EXIT
 for setting in $settings; do
   attrs=""
-  for pair in ${setting//,/ }; do attrs+=" ${pair%%=*}=\"${pair#*=}\""; done
-  sed -E "s#<physics([ />])#<physics$attrs\1#" "$source_scene" > "$scene"
+  drop=()  # a setting replaces the scene's own value of that attribute
+  for pair in ${setting//,/ }; do
+    attrs+=" ${pair%%=*}=\"${pair#*=}\""
+    drop+=(-e "s#(<physics[^>]*) ${pair%%=*}=\"[^\"]*\"#\1#")
+  done
+  sed -E "${drop[@]}" -e "s#<physics([ />])#<physics$attrs\1#" "$source_scene" > "$scene"
   for ((seed = 1; seed <= seeds; ++seed)); do
     "$stride" run "$scene" --seconds "$seconds" --seed "$seed" --report "$tmp/r.json" > /dev/null
     python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); r=j["robots"][0]; w=r["walk"]
