@@ -15,13 +15,13 @@ struct Setting {
 };
 
 std::string diag(const Eigen::Vector4d& v) {
-  std::string s;
+  std::string s = "[";
   for (int i = 0; i < 4; ++i) {
     char b[16];
-    std::snprintf(b, sizeof b, "%.0e", v[i]);
-    s += (i ? " " : "") + std::string(b);
+    std::snprintf(b, sizeof b, "%s%.0e", i ? " " : "", v[i]);
+    s += b;
   }
-  return "[" + s + "]";
+  return s + "]";
 }
 
 std::vector<Eigen::Vector2d> angles(const std::vector<Eigen::Vector4d>& x) {
