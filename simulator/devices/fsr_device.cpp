@@ -3,46 +3,55 @@
 #include <algorithm>
 #include <limits>
 
-#include <Eigen/Dense>
-
 #include "robot/core/error.hpp"
 
 namespace stride::sim {
 
-std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
-                                      const Eigen::Vector2d& cop) {
+LoadSplitter::LoadSplitter(const std::array<Eigen::Vector2d, 4>& points) {
+  for (int mask = 1; mask < 16; ++mask) {
+    Subset a(3, __builtin_popcount(mask));
+    int col = 0;
+    for (int i = 0; i < 4; ++i)
+      if (mask & (1 << i)) a.col(col++) = Eigen::Vector3d(1.0, points[i].x(), points[i].y());
+    supports_.push_back({mask, a, a.completeOrthogonalDecomposition()});
+  }
+}
+
+std::array<double, 4> LoadSplitter::split(double load, const Eigen::Vector2d& cop) const {
   std::array<double, 4> best{};
   if (load <= 0) return best;
   const Eigen::Vector3d b(1.0, cop.x(), cop.y());  // per unit load: sum f = 1, sum f p = cop
   double best_residual = std::numeric_limits<double>::infinity();
   double best_norm = std::numeric_limits<double>::infinity();
   // Four unknowns: try every support subset, keep the feasible one that best meets the moments.
-  for (int mask = 1; mask < 16; ++mask) {
-    const int n = __builtin_popcount(mask);
-    // Bounded sizes keep this per-frame solve off the heap.
-    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4> a(3, n);
-    int col = 0;
-    for (int i = 0; i < 4; ++i)
-      if (mask & (1 << i)) a.col(col++) = Eigen::Vector3d(1.0, points[i].x(), points[i].y());
+  for (const Support& s : supports_) {
     // Least-norm least-squares solution on this subset.
-    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> f =
-        a.completeOrthogonalDecomposition().solve(b);
+    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> f = s.cod.solve(b);
     if ((f.array() < -1e-12).any()) continue;
-    const double residual = (a * f - b).norm();
+    const double residual = (s.a * f - b).norm();
     const double norm = f.squaredNorm();
     if (residual < best_residual - 1e-12 ||
         (std::abs(residual - best_residual) <= 1e-12 && norm < best_norm)) {
       best_residual = residual;
       best_norm = norm;
-      col = 0;
-      for (int i = 0; i < 4; ++i) best[i] = (mask & (1 << i)) ? f[col++] * load : 0.0;
+      int col = 0;
+      for (int i = 0; i < 4; ++i) best[i] = (s.mask & (1 << i)) ? f[col++] * load : 0.0;
     }
   }
   return best;
 }
 
+std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
+                                      const Eigen::Vector2d& cop) {
+  return LoadSplitter(points).split(load, cop);
+}
+
 FsrDevice::FsrDevice(const RobotBody& body, int robot_index, const FsrSpec& spec, NoiseSource noise)
-    : spec_(spec), link_(body.model().link_index(spec.link)), robot_(robot_index), noise_(noise) {
+    : spec_(spec),
+      splitter_(spec.positions),
+      link_(body.model().link_index(spec.link)),
+      robot_(robot_index),
+      noise_(noise) {
   if (link_ < 0)
     throw Error("FSR link '" + spec.link + "' is not a link of " + body.model().source);
 }
@@ -69,7 +78,7 @@ std::array<double, 4> FsrDevice::sample(bool noise_on) {
   std::array<double, 4> out{};
   if (steps_ > 0 && load_sum_ > 0) {
     const double load = load_sum_ / steps_;
-    out = distribute_load(spec_.positions, load, moment_sum_ / load_sum_);
+    out = splitter_.split(load, moment_sum_ / load_sum_);
   }
   for (double& f : out)
     f = std::clamp(f + (noise_on ? noise_.gaussian(spec_.noise) : 0.0), 0.0, spec_.max_force);

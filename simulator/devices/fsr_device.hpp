@@ -3,8 +3,9 @@
 // the foot's normal load and its centre of pressure are shared among the four sensors as a rigid
 // plate on four supports would (least-norm, non-negative), then noise and saturation.
 #include <array>
+#include <vector>
 
-#include <Eigen/Core>
+#include <Eigen/Dense>
 
 #include "simulator/devices/device_description.hpp"
 #include "simulator/devices/noise_source.hpp"
@@ -13,7 +14,25 @@
 
 namespace stride::sim {
 
-// Non-negative least-norm forces at `points` whose sum is `load` and whose moment centre is `cop`.
+// Non-negative least-norm forces at four fixed points whose sum is a load and whose moment centre
+// is a given centre of pressure. The fifteen support subsets' decompositions depend on the points
+// only, so they are made once.
+class LoadSplitter {
+ public:
+  explicit LoadSplitter(const std::array<Eigen::Vector2d, 4>& points);
+  std::array<double, 4> split(double load, const Eigen::Vector2d& cop) const;
+
+ private:
+  using Subset = Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 4>;  // bounded: off the heap
+  struct Support {
+    int mask;
+    Subset a;  // columns (1, x, y) of the subset's points
+    Eigen::CompleteOrthogonalDecomposition<Subset> cod;
+  };
+  std::vector<Support> supports_;  // masks 1..15
+};
+
+// LoadSplitter(points).split(load, cop), for one-off use.
 std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
                                       const Eigen::Vector2d& cop);
 
@@ -27,6 +46,7 @@ class FsrDevice {
 
  private:
   FsrSpec spec_;
+  LoadSplitter splitter_;
   int link_;
   int robot_;
   NoiseSource noise_;

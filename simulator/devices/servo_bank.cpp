@@ -26,22 +26,24 @@ ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, do
   current_sum_.assign(joints_.size(), 0);
 }
 
-void ServoBank::apply(const RobotBody& body) {
+void ServoBank::apply(RobotBody& body) {
   for (size_t s = 0; s < joints_.size(); ++s) {
     const int j = joints_[s];
     dJointID id = body.joint(j);
     if (dJointGetType(id) != dJointTypeHinge) continue;
     const MotorSpec& m = *motors_[s];
     const ServoCommand& c = commands_[s];
+    const double q = body.joint_position(j);
+    body.keep_stops_within_reach(j, q);
     const double qd = body.joint_velocity(j);
     // A DC motor's torque falls linearly with speed; keep a floor so it can always brake.
     const double speed_factor = std::clamp(1.0 - std::abs(qd) / m.no_load_speed, 0.25, 1.0);
     const double max_torque = m.stall_torque * speed_factor;
     if (c.mode == hal::ServoMode::Position) {
-      const double err = c.position - body.joint_position(j);
+      const double err = c.position - q;
       bool engaged = true;
       if (m.backlash > 0) {
-        engaged = apply_with_backlash(id, s, body.joint_position(j), c);
+        engaged = apply_with_backlash(id, s, q, c);
       } else if (m.spring > 0) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
@@ -57,7 +59,7 @@ void ServoBank::apply(const RobotBody& body) {
       applied_torque_[s] = 0;
     } else {
       dJointSetHingeParam(id, dParamFMax, 0);
-      gear_angle_[s] = body.joint_position(j);  // back-driven with the joint
+      gear_angle_[s] = q;  // back-driven with the joint
       const double tau = std::clamp(c.torque, -max_torque, max_torque);
       dJointAddHingeTorque(id, tau);
       applied_torque_[s] = tau;

@@ -32,7 +32,7 @@ class ServoBank {
   double stall_torque(int servo) const { return motors_[servo]->stall_torque; }
 
   // Before each physics step: set the ODE motors / torques from the commands.
-  void apply(const RobotBody& body);
+  void apply(RobotBody& body);
   // After each physics step: accumulate motor torque for the current estimate.
   void measure(const RobotBody& body);
   // Mean |armature current| since the last call (A), per servo; resets the accumulation.

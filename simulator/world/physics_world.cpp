@@ -5,6 +5,7 @@
 
 #include "simulator/devices/noise_source.hpp"
 #include "simulator/world/ode_context.hpp"
+#include "simulator/world/plane_cull.hpp"
 
 namespace stride::sim {
 namespace {
@@ -98,6 +99,7 @@ void PhysicsWorld::collide_pair(dGeomID g1, dGeomID g2) {
   const auto* i1 = static_cast<const GeomInfo*>(dGeomGetData(g1));
   const auto* i2 = static_cast<const GeomInfo*>(dGeomGetData(g2));
   if (i1->robot >= 0 && i1->robot == i2->robot && self_filter_ && !self_filter_(*i1, *i2)) return;
+  if (above_plane(g1, g2) || above_plane(g2, g1)) return;
   const int max_contacts = std::min(physics_.max_contacts, 64);
   dContactGeom geoms[64];
   const int n = dCollide(g1, g2, max_contacts, geoms, sizeof(dContactGeom));

@@ -86,6 +86,7 @@ RobotBody::RobotBody(PhysicsWorld& world, const model::RobotModel& model, int ro
   }
   // Joints are created in the zero pose, so ODE's hinge angle reads the URDF joint value.
   joints_.assign(nj, nullptr);
+  stops_set_.assign(nj, 0);
   feedback_.resize(nj);
   for (int j = 0; j < nj; ++j) {
     const model::Joint& jt = model.joints[j];
@@ -103,6 +104,7 @@ RobotBody::RobotBody(PhysicsWorld& world, const model::RobotModel& model, int ro
         if (jt.type == model::JointType::Revolute) {
           dJointSetHingeParam(id, dParamLoStop, jt.lower);
           dJointSetHingeParam(id, dParamHiStop, jt.upper);
+          stops_set_[j] = 1;
         }
         break;
       case model::JointType::Prismatic:
@@ -151,6 +153,24 @@ double RobotBody::joint_position(int j) const {
     default:
       return 0;
   }
+}
+
+void RobotBody::keep_stops_within_reach(int j, double q) {
+  // One step moves a joint far less than this (0.2 rad in 1 ms is 200 rad/s).
+  constexpr double kReach = 0.2;
+  const model::Joint& jt = model_.joints[j];
+  if (jt.type != model::JointType::Revolute) return;
+  const bool near = q < jt.lower + kReach || q > jt.upper - kReach;
+  if (near == static_cast<bool>(stops_set_[j])) return;
+  dJointID id = joints_[j];
+  if (near) {  // the low stop first: ODE refuses a low stop above the high one
+    dJointSetHingeParam(id, dParamLoStop, jt.lower);
+    dJointSetHingeParam(id, dParamHiStop, jt.upper);
+  } else {
+    dJointSetHingeParam(id, dParamLoStop, -dInfinity);
+    dJointSetHingeParam(id, dParamHiStop, dInfinity);
+  }
+  stops_set_[j] = near;
 }
 
 double RobotBody::joint_velocity(int j) const {

@@ -33,6 +33,11 @@ class RobotBody {
   // Torque the joint's motor and limits applied during the last step, about the joint axis.
   double joint_constraint_torque(int j) const;
 
+  // ODE works out every limited hinge's angle each step to test its stops. Far from both stops
+  // (`q` is the joint's angle now) the hinge is given none, which changes nothing (no limit row
+  // either way) but spares that work; within reach they are back in place.
+  void keep_stops_within_reach(int j, double q);
+
   // Whole-robot centre of mass in the world frame (mass-weighted body positions).
   Eigen::Vector3d centre_of_mass() const;
   // Its velocity (mass-weighted body velocities), world frame.
@@ -43,6 +48,7 @@ class RobotBody {
   std::vector<dBodyID> bodies_;
   std::vector<dJointID> joints_;
   std::vector<dJointFeedback> feedback_;
+  std::vector<char> stops_set_;  // per joint: ODE has the model's stops
 };
 
 Eigen::Isometry3d to_isometry(const dReal* pos, const dReal* rot);
