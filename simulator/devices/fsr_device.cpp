@@ -41,11 +41,6 @@ std::array<double, 4> LoadSplitter::split(double load, const Eigen::Vector2d& co
   return best;
 }
 
-std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
-                                      const Eigen::Vector2d& cop) {
-  return LoadSplitter(points).split(load, cop);
-}
-
 FsrDevice::FsrDevice(const RobotBody& body, int robot_index, const FsrSpec& spec, NoiseSource noise)
     : spec_(spec),
       splitter_(spec.positions),

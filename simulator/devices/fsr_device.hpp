@@ -32,10 +32,6 @@ class LoadSplitter {
   std::vector<Support> supports_;  // masks 1..15
 };
 
-// LoadSplitter(points).split(load, cop), for one-off use.
-std::array<double, 4> distribute_load(const std::array<Eigen::Vector2d, 4>& points, double load,
-                                      const Eigen::Vector2d& cop);
-
 class FsrDevice {
  public:
   FsrDevice(const RobotBody& body, int robot_index, const FsrSpec& spec, NoiseSource noise);

@@ -16,8 +16,8 @@ namespace stride::sim {
 struct PhysicsSettings {
   double step = 0.001;  // s
   enum class Solver { Exact, Iterative } solver = Solver::Iterative;
-  int iterations =
-      10;            // iterative solver only; walking studies state 20 (README "Solver settings")
+  // Iterative solver only. Walking studies state 20 (README "Solver settings").
+  int iterations = 10;
   double sor = 1.3;  // over-relaxation of the iterative solver
   double erp = 0.2;
   double cfm = 1e-5;

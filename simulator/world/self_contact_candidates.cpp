@@ -21,7 +21,7 @@ void SelfContactCandidates::rebuild(dSpaceID space) {
   boxes_.assign(6 * geoms_.size(), 0);
 }
 
-bool SelfContactCandidates::any_overlap() const {
+bool SelfContactCandidates::any_overlap() {
   if (pairs_.empty()) return false;
   for (std::size_t g = 0; g < geoms_.size(); ++g) dGeomGetAABB(geoms_[g], &boxes_[6 * g]);
   for (const auto& [i, j] : pairs_)

@@ -18,12 +18,12 @@ class SelfContactCandidates {
   int geom_count() const { return static_cast<int>(geoms_.size()); }
   std::size_t pair_count() const { return pairs_.size(); }
   // True when some candidate pair's bounding boxes overlap (ODE's own boxes and test).
-  bool any_overlap() const;
+  bool any_overlap();
 
  private:
   std::vector<dGeomID> geoms_;
   std::vector<std::pair<int, int>> pairs_;  // indices into geoms_
-  mutable std::vector<dReal> boxes_;        // 6 per geom, refreshed by any_overlap()
+  std::vector<dReal> boxes_;                // 6 per geom, refreshed by any_overlap()
 };
 
 }  // namespace stride::sim
