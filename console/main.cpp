@@ -1,5 +1,6 @@
 // `stride`: the single entry point. Subcommand names dispatch through console/cli/subcommands.cpp;
 // anything else opens the console (REPL, --script, -c) on an optional scene.
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -22,7 +23,12 @@ int main(int argc, char** argv) {
   if (!args.empty())
     for (const auto& s : table)
       if (s.name == args[0]) {
-        if (args.size() == 2 && is_help(args[1])) {  // `stride run --help`: its usage line
+        // `stride run --help`, `stride experiment posture --help`: the subcommand's usage line
+        const bool wants_help = (args.size() == 2 && is_help(args[1])) ||
+                                std::any_of(args.begin() + 1, args.end(), [](const std::string& a) {
+                                  return a == "--help" || a == "-h";
+                                });
+        if (wants_help) {
           std::cout << "usage: stride " << s.summary << "\n";
           return 0;
         }

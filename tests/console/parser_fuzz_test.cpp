@@ -47,7 +47,9 @@ int parse_all(const std::string& text) {
       if (!spec) continue;
       const int n = static_cast<int>(c.args.size());
       EXPECT_GE(n, spec->min_args) << s;
-      if (spec->max_args >= 0) EXPECT_LE(n, spec->max_args) << s;
+      if (spec->max_args >= 0) {
+        EXPECT_LE(n, spec->max_args) << s;
+      }
       ++accepted;
     } catch (const Error& e) {
       EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos)

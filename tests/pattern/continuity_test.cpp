@@ -67,10 +67,12 @@ TEST_P(Continuity, FeetMoveContinuouslyAndRestOnTheGroundOutsideTheirSwing) {
     const PatternSample s = pattern.sample(t);
     EXPECT_LT((s.left_foot - prev.left_foot).norm(), 1e-3) << "left foot jumps at t = " << t;
     EXPECT_LT((s.right_foot - prev.right_foot).norm(), 1e-3) << "right foot jumps at t = " << t;
-    if (s.support == SupportPhase::kLeft || s.support == SupportPhase::kDouble)
+    if (s.support == SupportPhase::kLeft || s.support == SupportPhase::kDouble) {
       EXPECT_EQ(s.left_foot.z(), 0.0) << t;
-    if (s.support == SupportPhase::kRight || s.support == SupportPhase::kDouble)
+    }
+    if (s.support == SupportPhase::kRight || s.support == SupportPhase::kDouble) {
       EXPECT_EQ(s.right_foot.z(), 0.0) << t;
+    }
     prev = s;
   }
   EXPECT_NEAR(prev.left_foot.x(), prev.right_foot.x(), 1e-12) << "feet side by side at the end";

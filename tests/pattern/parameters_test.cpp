@@ -141,7 +141,9 @@ TEST(PatternCommand, PlotsTheChapter3Figures) {
                           "fig3_17_knees", "fig3_18_stick_left", "fig3_18_stick_right"}) {
     const auto path = dir / (std::string(png) + ".png");
     EXPECT_TRUE(std::filesystem::exists(path)) << path;
-    if (std::filesystem::exists(path)) EXPECT_GT(std::filesystem::file_size(path), 1000u);
+    if (std::filesystem::exists(path)) {
+      EXPECT_GT(std::filesystem::file_size(path), 1000u);
+    }
   }
   EXPECT_NE(out.find("conventional pattern"), std::string::npos);
   std::filesystem::remove_all(dir);

@@ -64,8 +64,9 @@ TEST(ZmpInSupportPolygon, Fig3_16PatternKeepsTheZmpOnTheSoles) {
     EXPECT_GE(model::stability_margin(s.zmp, both_soles_polygon(s)), 0.0) << "t = " << s.t;
     // The half-length first and last swings are excepted: there the cubic of Eq. 3.7 crosses
     // the walking line before the swing foot lands.
-    if (s.t > p.T_s() && s.t < w.duration() - p.T_s())
+    if (s.t > p.T_s() && s.t < w.duration() - p.T_s()) {
       EXPECT_GE(zmp_margin(s), 0.0) << "t = " << s.t;
+    }
   }
 }
 

@@ -49,7 +49,9 @@ ConvexPolygon convex_hull(std::span<const Eigen::Vector2d> points) {
   std::array<Eigen::Vector2d, kCap> p;
   const int n = static_cast<int>(points.size());
   std::copy(points.begin(), points.end(), p.begin());
-  std::sort(p.begin(), p.begin() + n, [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  // A span of the n points: GCC 12 cannot see n <= kCap through std::sort's unrolled insertion.
+  const std::span<Eigen::Vector2d> filled(p.data(), std::min<size_t>(points.size(), kCap));
+  std::sort(filled.begin(), filled.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
   std::array<Eigen::Vector2d, 2 * kCap> h;
