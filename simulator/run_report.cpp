@@ -53,6 +53,7 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
     j.field("pitch_min", w.pitch_min).field("pitch_max", w.pitch_max);
     j.field("roll_min", w.roll_min).field("roll_max", w.roll_max);
     j.field("fell", w.fell).field("fell_at", w.fell_at);
+    j.field("tipped", std::string(tip_name(w.tipped))).field("tipped_at", w.tipped_at);
     j.field("foot_slip", w.foot_slip).field("foot_slip_net_x", w.foot_slip_net_x);
     j.field("foot_tilt_max", w.foot_tilt_max).field("foot_tilted_time", w.foot_tilted_time);
     j.field("foot_spin", w.foot_spin).field("foot_spin_max", w.foot_spin_max);

@@ -23,7 +23,29 @@ double sole_x_from_fk(const hal::SensorFrame& s, model::Side side) {
   return model::leg_fk(side, q).translation().x();
 }
 
+Tip tip_of(double pitch, double roll) {
+  if (std::max(std::abs(pitch), std::abs(roll)) <= kTipAngle) return Tip::None;
+  if (std::abs(pitch) >= std::abs(roll)) return pitch > 0 ? Tip::Forward : Tip::Backward;
+  return roll > 0 ? Tip::Right : Tip::Left;
+}
+
 }  // namespace
+
+const char* tip_name(Tip t) {
+  switch (t) {
+    case Tip::Forward:
+      return "forward";
+    case Tip::Backward:
+      return "backward";
+    case Tip::Right:
+      return "right";
+    case Tip::Left:
+      return "left";
+    case Tip::None:
+      break;
+  }
+  return "none";
+}
 
 void WalkMetrics::observe(const SimulatedRobot& robot) {
   const hal::SensorFrame& s = robot.latest_sensors();
@@ -56,6 +78,10 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   r_.pitch_max = std::max(r_.pitch_max, torso.pitch);
   r_.roll_min = std::min(r_.roll_min, torso.roll);
   r_.roll_max = std::max(r_.roll_max, torso.roll);
+  if (r_.tipped == Tip::None) {
+    r_.tipped = tip_of(torso.pitch, torso.roll);
+    if (r_.tipped != Tip::None) r_.tipped_at = s.time;
+  }
   if (!r_.fell && robot.fallen()) {
     r_.fell = true;
     r_.fell_at = s.time;
@@ -136,6 +162,9 @@ std::string walk_metrics_text(const WalkMetricsResult& r) {
     << r.foot_tilted_time << " s, spin " << r.foot_spin << " rad (max " << r.foot_spin_max << ")  "
     << (r.fell ? "FELL" : "did not fall");
   if (r.fell) o << " at " << r.fell_at << " s";
+  if (r.tipped != Tip::None)
+    o << ", tipped " << tip_name(r.tipped) << " past " << kTipAngle << " rad at " << r.tipped_at
+      << " s";
   return o.str();
 }
 

@@ -10,6 +10,14 @@
 
 namespace stride::sim {
 
+// Which way the torso first passed kTipAngle (pitch > 0 leans forward, roll > 0 leans right).
+enum class Tip { None, Forward, Backward, Right, Left };
+const char* tip_name(Tip t);  // "none", "forward", ...
+
+// The torso tilt the Ch. 4 experiments count as lost balance even without a fall (teams use
+// 0.4-0.6 rad as a fall threshold on the real NAO).
+inline constexpr double kTipAngle = 0.4;
+
 struct WalkMetricsResult {
   int steps = 0;                        // double supports entered after a single support
   double fk_distance = 0;               // m, sum of FK step lengths (thesis' method)
@@ -22,6 +30,8 @@ struct WalkMetricsResult {
   double yaw_min = 0, yaw_max = 0;  // rad, torso heading (unwrapped) relative to the first frame
   bool fell = false;
   double fell_at = -1;          // s
+  Tip tipped = Tip::None;       // the first pass of kTipAngle in pitch or roll
+  double tipped_at = -1;        // s
   double foot_slip = 0;         // m, summed horizontal displacement of each foot per stance
   double foot_slip_net_x = 0;   // m, signed forward part of it (negative: feet slid back)
   double foot_tilt_max = 0;     // rad, largest sole tilt from the vertical while loaded

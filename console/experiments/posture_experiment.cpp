@@ -4,6 +4,7 @@
 #include <limits>
 #include <ostream>
 
+#include "console/experiments/posture_tally.hpp"
 #include "console/experiments/walk_pool.hpp"
 
 namespace stride::experiments {
@@ -91,10 +92,13 @@ void write_walk_figures(const ExperimentOptions& o, const WalkRecording& r, cons
 int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
   const int seeds = o.seeds > 0 ? o.seeds : 1;
   const bool files = prepare_out_dir(o);
-  plot::Table summary{{"case", "seed", "steps", "distance", "fk_distance", "speed", "step_length",
-                       "pitch_min", "pitch_max", "roll_min", "roll_max", "fell", "foot_slip",
-                       "foot_slip_net_x", "foot_tilted_time", "foot_spin", "yaw_min", "yaw_max"}};
+  plot::Table summary{
+      {"case",      "seed",        "steps",     "distance",        "fk_distance",
+       "speed",     "step_length", "pitch_min", "pitch_max",       "roll_min",
+       "roll_max",  "fell",        "foot_slip", "foot_slip_net_x", "foot_tilted_time",
+       "foot_spin", "yaw_min",     "yaw_max",   "tipped",          "tipped_at"}};
   std::vector<std::vector<std::string>> rows;
+  std::vector<PostureTally> tallies(posture_cases().size());
   std::vector<WalkSetup> setups;
   for (const PostureCase& c : posture_cases())
     for (int seed = 1; seed <= seeds; ++seed)
@@ -104,16 +108,35 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
     const int seed = static_cast<int>(i % seeds) + 1;
     const PostureCase& c = posture_cases()[k];
     const WalkSummary s = summarize(r);
-    summary.add_row({double(k), double(seed), double(s.steps), s.distance, s.fk_distance, s.speed,
-                     s.step_length, s.pitch_min, s.pitch_max, s.roll_min, s.roll_max,
-                     s.fell ? 1.0 : 0.0, r.metrics.foot_slip, r.metrics.foot_slip_net_x,
-                     r.metrics.foot_tilted_time, r.metrics.foot_spin, r.metrics.yaw_min,
-                     r.metrics.yaw_max});
+    summary.add_row({double(k),
+                     double(seed),
+                     double(s.steps),
+                     s.distance,
+                     s.fk_distance,
+                     s.speed,
+                     s.step_length,
+                     s.pitch_min,
+                     s.pitch_max,
+                     s.roll_min,
+                     s.roll_max,
+                     s.fell ? 1.0 : 0.0,
+                     r.metrics.foot_slip,
+                     r.metrics.foot_slip_net_x,
+                     r.metrics.foot_tilted_time,
+                     r.metrics.foot_spin,
+                     r.metrics.yaw_min,
+                     r.metrics.yaw_max,
+                     double(static_cast<int>(s.tipped)),
+                     s.tipped_at});
+    add_walk(tallies[k], s);
+    const std::string tipped = s.tipped == sim::Tip::None ? "-"
+                                                          : std::string(sim::tip_name(s.tipped)) +
+                                                                " " + fixed(s.tipped_at, 2);
     rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
                     fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
                     fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
                     fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
-                    c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
+                    tipped, c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
                     fixed(c.thesis_step, 4)});
     if (files) {
       const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
@@ -129,8 +152,14 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
          "feet midpoint, fk = the thesis' FK measure\n";
   print_table(out,
               {"case", "seed", "steps", "dist[m]", "fk[m]", "v[m/s]", "step[m]", "pitch[rad]",
-               "roll[rad]", "fell", "thesis", "dist[m]", "v[m/s]", "step[m]"},
+               "roll[rad]", "fell", "past 0.4 rad [s]", "thesis", "dist[m]", "v[m/s]", "step[m]"},
               rows);
+  std::vector<std::vector<std::string>> tally_rows;
+  for (std::size_t k = 0; k < tallies.size(); ++k)
+    tally_rows.push_back(tally_row(posture_cases()[k].scene, tallies[k]));
+  out << "\nPer case: lost = fell or torso past " << sim::kTipAngle
+      << " rad (first way: fwd/back/right/left); kept walks' mean distance and largest |pitch|\n";
+  print_table(out, tally_header(), tally_rows);
   if (files) plot::write_csv(o.out_dir + "/posture_summary.csv", summary);
   return 0;
 }

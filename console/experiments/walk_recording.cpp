@@ -214,6 +214,8 @@ WalkRecording record_walk(const WalkSetup& setup) {
   const sim::WalkMetricsResult end = session.simulation().walk_metrics(0).result();
   r.metrics.fell = end.fell;
   r.metrics.fell_at = end.fell_at;
+  r.metrics.tipped = end.tipped;
+  r.metrics.tipped_at = end.tipped_at;
   return r;
 }
 
@@ -222,6 +224,8 @@ WalkSummary summarize(const WalkRecording& r) {
   s.steps = r.metrics.steps;
   s.fk_distance = r.metrics.fk_distance;
   s.fell = r.metrics.fell;
+  s.tipped = r.metrics.tipped;
+  s.tipped_at = r.metrics.tipped_at;
   const auto& rows = r.trace.rows;
   bool first = true;
   double x0 = 0, x1 = 0;

@@ -94,6 +94,8 @@ struct WalkSummary {
   double step_length = 0;  // m, distance / steps
   double pitch_min = 0, pitch_max = 0, roll_min = 0, roll_max = 0;  // rad, true torso, walking
   bool fell = false;
+  sim::Tip tipped = sim::Tip::None;  // first pass of sim::kTipAngle, looked for until the end
+  double tipped_at = -1;             // s
 };
 WalkSummary summarize(const WalkRecording& r);
 

@@ -1,0 +1,29 @@
+#pragma once
+// The Sec. 4.3.4.2 criterion counted over the seeds of one posture case: how many walks fell or
+// tilted past sim::kTipAngle, which way they first tilted, and how the others walked.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "console/experiments/walk_recording.hpp"
+
+namespace stride::experiments {
+
+struct PostureTally {
+  int walks = 0;
+  int fell = 0;
+  int tipped = 0;                // torso past kTipAngle (fallen walks included)
+  int lost = 0;                  // fell or tipped
+  std::array<int, 4> tip_way{};  // forward, backward, right, left: the first pass of kTipAngle
+  int kept = 0;                  // neither fell nor tipped
+  double kept_distance_sum = 0;  // m
+  double kept_max_pitch = 0;     // rad, the largest |pitch| of a kept walk
+};
+
+void add_walk(PostureTally& t, const WalkSummary& s);
+
+// `case walks fell tipped lost fwd/back/right/left kept-mean-distance kept-max-pitch`, as text.
+std::vector<std::string> tally_row(const std::string& name, const PostureTally& t);
+std::vector<std::string> tally_header();
+
+}  // namespace stride::experiments
