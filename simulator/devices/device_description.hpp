@@ -21,6 +21,9 @@ struct MotorSpec {
   // above) instead of the stiff velocity servo. 0 keeps the velocity servo.
   double spring = 0;   // N*m/rad at the joint, at stiffness 1
   double damping = 0;  // N*m*s/rad at the joint; 0 with a spring: back-EMF_damping()
+  // Opt-in integral action of the compliant servo (the thesis' local PID joint controllers,
+  // Sec. 3.6): torque += integral * (time integral of the error), held within the stall torque.
+  double integral = 0;  // N*m/(rad*s) at the joint, at stiffness 1; needs a spring
   // Opt-in gear play of the velocity servo: the joint moves freely within +-backlash/2 of the
   // gear's output, which the servo drives; 0: no play.
   double backlash = 0;  // rad

@@ -42,6 +42,7 @@ constexpr MotorNumber kMotorNumbers[] = {
     {"gain", Dimension::None, &MotorSpec::gain},
     {"spring", Dimension::None, &MotorSpec::spring},
     {"damping", Dimension::None, &MotorSpec::damping},
+    {"integral", Dimension::None, &MotorSpec::integral},
     {"backlash", Dimension::Angle, &MotorSpec::backlash},
 };
 
@@ -65,6 +66,8 @@ void set_motor_numbers(MotorSpec& m, const std::map<std::string, double>& values
 std::string motor_problem(const MotorSpec& m) {
   if (m.damping > 0 && m.spring <= 0)
     return "damping is only for a spring (the velocity servo has no damping setting)";
+  if (m.integral > 0 && m.spring <= 0)
+    return "integral is only for a spring (the velocity servo has no integral setting)";
   if (m.backlash > 0 && m.spring > 0)
     return "backlash is only for the velocity servo, not a spring";
   return {};

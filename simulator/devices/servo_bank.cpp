@@ -23,6 +23,7 @@ ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, do
   commands_.resize(joints_.size());
   for (int j : joints_) gear_angle_.push_back(body.joint_position(j));
   applied_torque_.assign(joints_.size(), 0);
+  error_integral_.assign(joints_.size(), 0);
   current_sum_.assign(joints_.size(), 0);
 }
 
@@ -48,7 +49,13 @@ void ServoBank::apply(RobotBody& body) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
         const double softness = 1.0 / (step_ * m.spring + m.spring_damping());
-        dJointSetHingeParam(id, dParamVel, m.spring * err * softness);
+        double integral_torque = 0;
+        if (m.integral > 0) {  // held within the stall torque so that it cannot wind up
+          const double limit = m.stall_torque / m.integral;
+          error_integral_[s] = std::clamp(error_integral_[s] + err * step_, -limit, limit);
+          integral_torque = m.integral * error_integral_[s];
+        }
+        dJointSetHingeParam(id, dParamVel, (m.spring * err + integral_torque) * softness);
         dJointSetHingeParam(id, dParamCFM, softness);
       } else {
         dJointSetHingeParam(id, dParamVel,
@@ -60,6 +67,7 @@ void ServoBank::apply(RobotBody& body) {
     } else {
       dJointSetHingeParam(id, dParamFMax, 0);
       gear_angle_[s] = q;  // back-driven with the joint
+      error_integral_[s] = 0;
       const double tau = std::clamp(c.torque, -max_torque, max_torque);
       dJointAddHingeTorque(id, tau);
       applied_torque_[s] = tau;

@@ -49,6 +49,7 @@ class ServoBank {
   std::vector<ServoCommand> commands_;
   std::vector<double> applied_torque_;  // torque-mode torque of the current step
   std::vector<double> gear_angle_;      // gear output angle per servo (rad), for backlash
+  std::vector<double> error_integral_;  // rad*s per servo, for the spring's integral action
   std::vector<double> current_sum_;
   int samples_ = 0;
 };

@@ -116,6 +116,8 @@ TEST(BadScene, MotorOverrides) {
                "at least one motor attribute");
   expect_error(robot + R"(<motor name="pitch" spring="100" backlash="1deg"/></robot></scene>)",
                "bad.xml:3", "backlash is only for the velocity servo");
+  expect_error(robot + R"(<motor name="pitch" integral="50"/></robot></scene>)", "bad.xml:3",
+               "integral is only for a spring");
   expect_error(
       "<scene>\n<robot " + kNao + ">\n" + R"(<motor name="pitch" gain="5"/></robot></scene>)",
       "bad.xml:3", "there is none");

@@ -60,6 +60,18 @@ TEST(Devices, CompliantServoSagsByGravityTorqueOverSpring) {
   EXPECT_NEAR(stiff->robot(0).body().joint_position(j), -0.6, 1e-3);
 }
 
+// Integral action (the thesis' PID joint servos) takes the sag out: the error's integral grows
+// until it alone carries the gravity torque, so the joint settles on its target.
+TEST(Devices, CompliantServoIntegralActionRemovesTheSag) {
+  const double spring = 60;  // integral 240: the sag closes at about 240 / 60 = 4 per second
+  auto sim =
+      test::scene_from_text(hung_nao_with(R"(<motor name="pitch" spring="60" integral="240"/>)"));
+  const auto [j, q, tau] = settle_hung_hip(*sim, 4.0);
+  const double sag = std::abs(tau) / spring;  // what the spring alone leaves
+  EXPECT_GT(sag, 0.005);
+  EXPECT_LT(std::abs(q + 0.6), 0.02 * sag) << "q " << q << ", sag without integral " << sag;
+}
+
 // Strong damping brings the hung leg to a new target without overshoot; a tenth of the
 // back-EMF damping lets it overshoot.
 TEST(Devices, CompliantServoDampingSetsTheOvershoot) {
