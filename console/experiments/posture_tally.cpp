@@ -10,12 +10,8 @@ void add_walk(PostureTally& t, const WalkSummary& s) {
   ++t.walks;
   t.fell += s.fell;
   const bool tipped = s.tipped != sim::Tip::None;
-  t.tipped += tipped;
   if (tipped) ++t.tip_way[static_cast<int>(s.tipped) - 1];
-  if (s.fell || tipped) {
-    ++t.lost;
-    return;
-  }
+  if (s.fell || tipped) return;
   ++t.kept;
   t.kept_distance_sum += s.distance;
   t.kept_max_pitch = std::max({t.kept_max_pitch, -s.pitch_min, s.pitch_max});
@@ -32,8 +28,8 @@ std::vector<std::string> tally_row(const std::string& name, const PostureTally& 
   return {name,
           std::to_string(t.walks),
           std::to_string(t.fell),
-          std::to_string(t.tipped),
-          std::to_string(t.lost) + "/" + std::to_string(t.walks),
+          std::to_string(t.tipped()),
+          std::to_string(t.lost()) + "/" + std::to_string(t.walks),
           std::to_string(w[0]) + "/" + std::to_string(w[1]) + "/" + std::to_string(w[2]) + "/" +
               std::to_string(w[3]),
           std::to_string(t.kept),

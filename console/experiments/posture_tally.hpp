@@ -12,12 +12,13 @@ namespace stride::experiments {
 struct PostureTally {
   int walks = 0;
   int fell = 0;
-  int tipped = 0;                // torso past kTipAngle (fallen walks included)
-  int lost = 0;                  // fell or tipped
   std::array<int, 4> tip_way{};  // forward, backward, right, left: the first pass of kTipAngle
   int kept = 0;                  // neither fell nor tipped
   double kept_distance_sum = 0;  // m
   double kept_max_pitch = 0;     // rad, the largest |pitch| of a kept walk
+
+  int tipped() const { return tip_way[0] + tip_way[1] + tip_way[2] + tip_way[3]; }
+  int lost() const { return walks - kept; }  // fell or tipped
 };
 
 void add_walk(PostureTally& t, const WalkSummary& s);

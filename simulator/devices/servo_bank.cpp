@@ -50,9 +50,11 @@ void ServoBank::apply(RobotBody& body) {
         // spring taken at the end of the step so that stiff springs stay stable.
         const double softness = 1.0 / (step_ * m.spring + m.spring_damping());
         double integral_torque = 0;
-        if (m.integral > 0) {  // held within the stall torque so that it cannot wind up
+        // The integral stays within the stall torque and is cleared while unpowered: no wind-up.
+        if (m.integral > 0) {
           const double limit = m.stall_torque / m.integral;
-          error_integral_[s] = std::clamp(error_integral_[s] + err * step_, -limit, limit);
+          error_integral_[s] =
+              c.stiffness > 0 ? std::clamp(error_integral_[s] + err * step_, -limit, limit) : 0;
           integral_torque = m.integral * error_integral_[s];
         }
         dJointSetHingeParam(id, dParamVel, (m.spring * err + integral_torque) * softness);

@@ -28,8 +28,8 @@ TEST(PostureTally, CountsLostWalksByWayAndAveragesTheKeptOnes) {
   add_walk(t, walk(0.9, -0.10, 0.10, true, sim::Tip::Left));
   EXPECT_EQ(t.walks, 5);
   EXPECT_EQ(t.fell, 2);
-  EXPECT_EQ(t.tipped, 3);
-  EXPECT_EQ(t.lost, 3);
+  EXPECT_EQ(t.tipped(), 3);
+  EXPECT_EQ(t.lost(), 3);
   EXPECT_EQ(t.kept, 2);
   EXPECT_EQ(t.tip_way, (std::array<int, 4>{1, 1, 0, 1}));
   const auto row = tally_row("none_fast", t);
