@@ -1,6 +1,7 @@
 // `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--no-plots]`: the
 // thesis' Chapter 4 experiments run in the simulator (posture, knee-energy, kalman, fastest,
-// arm-swing); --jobs walks at once (default: hardware threads), the results do not depend on it.
+// arm-swing, gains); --jobs walks at once (default: hardware threads), the results do not depend
+// on it.
 #include <ostream>
 
 #include "console/cli/arguments.hpp"
@@ -16,7 +17,8 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     ArgumentReader a(args, "experiment");
     experiments::ExperimentOptions o;
     o.plots = !a.flag("--no-plots");  // before positional(), which skips a flag's value
-    const std::string name = a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing");
+    const std::string name =
+        a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing|gains");
 
     if (a.has("--seeds")) {
       const std::uint64_t n = a.unsigned_integer("--seeds");

@@ -49,7 +49,8 @@ const std::vector<Subcommand>& subcommands() {
        "walking pattern (Ch. 3) offline",
        pattern_main},
       {"experiment",
-       "experiment posture|knee-energy|kalman|fastest|arm-swing [--seeds N] [--jobs N] [--out dir] "
+       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains [--seeds N] [--jobs N] "
+       "[--out dir] "
        "[--scenes dir] [--no-plots]: Ch. 4 experiments (--jobs: walks at once, default all "
        "hardware threads)",
        experiment_main},

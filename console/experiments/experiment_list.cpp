@@ -5,6 +5,7 @@
 
 #include "console/experiments/arm_swing_experiment.hpp"
 #include "console/experiments/fastest_experiment.hpp"
+#include "console/experiments/gains_experiment.hpp"
 #include "console/experiments/kalman_experiment.hpp"
 #include "console/experiments/knee_energy_experiment.hpp"
 #include "console/experiments/posture_experiment.hpp"
@@ -20,7 +21,7 @@ struct Entry {
 constexpr std::array kExperiments = {
     Entry{"posture", run_posture_experiment},     Entry{"knee-energy", run_knee_energy_experiment},
     Entry{"kalman", run_kalman_experiment},       Entry{"fastest", run_fastest_experiment},
-    Entry{"arm-swing", run_arm_swing_experiment},
+    Entry{"arm-swing", run_arm_swing_experiment}, Entry{"gains", run_gains_experiment},
 };
 
 }  // namespace

@@ -24,7 +24,7 @@ WalkSummary walk(const std::string& scene) {
 void expect_stable_walk(const WalkSummary& s) {
   EXPECT_FALSE(s.fell);
   EXPECT_NEAR(s.steps, 61, 2);  // 61 foot steps; the FSR count may split a landing
-  EXPECT_GT(s.distance, 1.0);  // thesis: 2.6-2.9 m; open loop here slips, but goes forward
+  EXPECT_GT(s.distance, 1.0);   // thesis: 2.6-2.9 m; open loop here slips, but goes forward
   EXPECT_LT(std::max(-s.pitch_min, s.pitch_max), 0.35);
   EXPECT_LT(std::max(-s.roll_min, s.roll_max), 0.35);
 }
