@@ -51,6 +51,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
     if (!placement.devices.empty()) devices_ = load_device_file(placement.devices);
     if (placement.period > 0) devices_.period = placement.period;  // the scene's choice wins
     for (const MotorOverride& o : placement.motors) apply_motor_override(devices_, o);
+    for (const ServoOverride& o : placement.servos) apply_servo_override(devices_, o);
   } catch (const Error& e) {
     throw error_at(placement.file, placement.line,
                    "<robot name=\"" + placement.name + "\">: " + e.what());
@@ -167,11 +168,11 @@ void SimulatedRobot::sample_sensors(double time, const Eigen::Vector3d& gravity)
       s.position[l] = commands_.position[l];
       continue;
     }
-    double q = body_->joint_position(j);
+    const int sv = servos_->servo_of_joint(j);
+    double q = body_->joint_position(j) - (sv >= 0 ? servos_->offset(sv) : 0.0);
     if (switches_.noise) q += encoder_noise_.gaussian(devices_.encoder.noise);
     if (switches_.quantise) q = std::round(q / resolution) * resolution;
     s.position[l] = q;
-    const int sv = servos_->servo_of_joint(j);
     s.current[l] = sv >= 0 ? currents_[sv] : 0.0;
   }
   if (imu_) {

@@ -41,9 +41,21 @@ struct MotorOverride {
   int line = 0;
 };
 
+// A scene's calibration error on one servo of the device file: <servo joint="..." offset="3deg"/>
+// inside <robot>.
+struct ServoOverride {
+  std::string joint;
+  double offset = 0;  // rad
+  std::string file;   // where it was written
+  int line = 0;
+};
+
 struct ServoSpec {
   std::string joint;  // URDF joint name
   int motor = -1;     // index into DeviceDescription::motors
+  // Opt-in calibration error: the joint's true angle is the servo's (and its encoder's) angle plus
+  // this, so a command q puts the joint at q + offset while the encoder reads q.
+  double offset = 0;  // rad
 };
 
 struct ImuSpec {
@@ -90,5 +102,9 @@ DeviceDescription load_device_file(const std::string& path);
 // Sets the override's values on the motor it names; throws stride::Error("file:line: ...") at
 // the override when the device file has no such motor or the result is inconsistent.
 void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_);
+
+// Sets the override's offset on the servo of its joint; throws stride::Error("file:line: ...")
+// at the override when the device file has no servo for that joint.
+void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_);
 
 }  // namespace stride::sim

@@ -146,9 +146,10 @@ DeviceDescription load_device_file(const std::string& path) {
     if (n == "motor") {
       d.motors.push_back(motor(e));
     } else if (n == "servo") {
-      e.allow_only({"joint", "motor"});
+      e.allow_only({"joint", "motor", "offset"});
       ServoSpec s;
       s.joint = e.text("joint");
+      s.offset = e.has("offset") ? e.number("offset", Dimension::Angle) : 0.0;
       const std::string m = e.text("motor");
       for (size_t i = 0; i < d.motors.size(); ++i)
         if (d.motors[i].name == m) s.motor = static_cast<int>(i);
@@ -177,6 +178,27 @@ MotorOverride motor_override(const XmlElement& e) {
   o.file = e.file();
   o.line = e.line();
   return o;
+}
+
+ServoOverride servo_override(const XmlElement& e) {
+  e.allow_only({"joint", "offset"});
+  ServoOverride o;
+  o.joint = e.text("joint");
+  o.offset = e.number("offset", Dimension::Angle);
+  o.file = e.file();
+  o.line = e.line();
+  return o;
+}
+
+void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_) {
+  for (ServoSpec& s : devices.servos)
+    if (s.joint == override_.joint) {
+      s.offset = override_.offset;
+      return;
+    }
+  throw error_at(
+      override_.file, override_.line,
+      "<servo joint=\"" + override_.joint + "\">: no servo for that joint in " + devices.file);
 }
 
 void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_) {

@@ -8,5 +8,6 @@ namespace stride::sim {
 
 // Checks the attributes (units, > 0) where they are written; fails through XmlElement.
 MotorOverride motor_override(const XmlElement& e);
+ServoOverride servo_override(const XmlElement& e);
 
 }  // namespace stride::sim

@@ -19,6 +19,7 @@ ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, do
     servo_of_joint_[j] = static_cast<int>(joints_.size());
     joints_.push_back(j);
     motors_.push_back(&devices.motors[s.motor]);
+    offsets_.push_back(s.offset);
   }
   commands_.resize(joints_.size());
   for (int j : joints_) gear_angle_.push_back(body.joint_position(j));
@@ -41,10 +42,11 @@ void ServoBank::apply(RobotBody& body) {
     const double speed_factor = std::clamp(1.0 - std::abs(qd) / m.no_load_speed, 0.25, 1.0);
     const double max_torque = m.stall_torque * speed_factor;
     if (c.mode == hal::ServoMode::Position) {
-      const double err = c.position - q;
+      const double target = c.position + offsets_[s];  // where the joint really goes
+      const double err = target - q;
       bool engaged = true;
       if (m.backlash > 0) {
-        engaged = apply_with_backlash(id, s, q, c);
+        engaged = apply_with_backlash(id, s, q, target);
       } else if (m.spring > 0) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
@@ -77,12 +79,11 @@ void ServoBank::apply(RobotBody& body) {
   }
 }
 
-bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, const ServoCommand& c) {
+bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, double target) {
   const MotorSpec& m = *motors_[s];
   // The gear's output follows the command at the servo's speed; the joint sits in its play.
   double& gear = gear_angle_[s];
-  const double gear_speed =
-      std::clamp(m.gain * (c.position - gear), -m.no_load_speed, m.no_load_speed);
+  const double gear_speed = std::clamp(m.gain * (target - gear), -m.no_load_speed, m.no_load_speed);
   gear += gear_speed * step_;
   const double half = 0.5 * m.backlash;
   const double offset = q - gear;

@@ -30,6 +30,8 @@ class ServoBank {
   const ServoCommand& command(int servo) const { return commands_[servo]; }
   // The motor's stall torque at the joint (N m), the most a servo ever applies.
   double stall_torque(int servo) const { return motors_[servo]->stall_torque; }
+  // The joint's true angle minus what the servo and its encoder take it to be (rad).
+  double offset(int servo) const { return offsets_[servo]; }
 
   // Before each physics step: set the ODE motors / torques from the commands.
   void apply(RobotBody& body);
@@ -40,13 +42,14 @@ class ServoBank {
 
  private:
   // Velocity servo through gear play: returns false while the joint is free within the play.
-  bool apply_with_backlash(dJointID id, std::size_t servo, double q, const ServoCommand& c);
+  bool apply_with_backlash(dJointID id, std::size_t servo, double q, double target);
 
   double step_;
   std::vector<int> joints_;  // model joint index per servo
   std::vector<const MotorSpec*> motors_;
   std::vector<int> servo_of_joint_;
   std::vector<ServoCommand> commands_;
+  std::vector<double> offsets_;         // rad per servo, ServoSpec::offset
   std::vector<double> applied_torque_;  // torque-mode torque of the current step
   std::vector<double> gear_angle_;      // gear output angle per servo (rad), for backlash
   std::vector<double> error_integral_;  // rad*s per servo, for the spring's integral action

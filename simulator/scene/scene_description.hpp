@@ -87,6 +87,7 @@ struct RobotPlacement {
   double stiffness = 1.0;   // servo stiffness held until a controller commands otherwise
   double period = 0;        // s; control period overriding the device file's (0: keep it)
   std::vector<MotorOverride> motors;  // <motor> changes to the device file, in order
+  std::vector<ServoOverride> servos;  // <servo> calibration errors, in order
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;

@@ -291,8 +291,12 @@ class Parser {
       } else if (n == "motor") {
         if (r.devices.empty()) child.fail("<motor> changes the device file, and there is none");
         r.motors.push_back(motor_override(child));
+      } else if (n == "servo") {
+        if (r.devices.empty()) child.fail("<servo> changes the device file, and there is none");
+        r.servos.push_back(servo_override(child));
       } else {
-        child.fail("unknown element in <robot> (expected joints, sensors, controller or motor)");
+        child.fail(
+            "unknown element in <robot> (expected joints, sensors, controller, motor or servo)");
       }
     }
     out_.robots.push_back(std::move(r));

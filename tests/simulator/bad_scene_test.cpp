@@ -100,7 +100,8 @@ TEST(BadScene, IncludeReusesAFile) {
   EXPECT_DOUBLE_EQ(sim->scene().physics.step, 0.002);
 }
 
-// <motor> inside <robot> changes the device file's motor of that name, checked where written.
+// <motor> and <servo> inside <robot> change the device file's motor of that name or servo of that
+// joint, checked where written.
 TEST(BadScene, MotorOverrides) {
   const std::string robot =
       "<scene>\n<robot " + kNao + R"( devices="../../scenes/robots/nao/nao.devices.xml">)" + "\n";
@@ -121,6 +122,16 @@ TEST(BadScene, MotorOverrides) {
   expect_error(
       "<scene>\n<robot " + kNao + ">\n" + R"(<motor name="pitch" gain="5"/></robot></scene>)",
       "bad.xml:3", "there is none");
+  expect_error(robot + R"(<servo joint="LElbow" offset="1deg"/></robot></scene>)", "bad.xml:3",
+               "no servo for that joint");
+  expect_error(robot + R"(<servo joint="LHipPitch" offset="3 bananas"/></robot></scene>)",
+               "bad.xml:3", "offset");
+  expect_error(robot + R"(<servo joint="LHipPitch"/></robot></scene>)", "bad.xml:3", "offset");
+  expect_error(robot + R"(<servo joint="LHipPitch" offset="1deg" motor="pitch"/></robot></scene>)",
+               "bad.xml:3", "unknown attribute 'motor'");
+  expect_error("<scene>\n<robot " + kNao + ">\n" +
+                   R"(<servo joint="LHipPitch" offset="1deg"/></robot></scene>)",
+               "bad.xml:3", "there is none");
   EXPECT_EQ(load_error(robot + R"(<motor name="pitch" gain="50" spring="150"/></robot></scene>)"),
             "");
 }

@@ -145,6 +145,24 @@ TEST(Devices, PositionModeHoldsAndCurrentIsTorqueOverGearAndMotorConstant) {
   EXPECT_NEAR(current, expected_current, 0.05 * expected_current);
 }
 
+// A calibration error of the servo: commanded -0.6, the joint stands at -0.6 + offset while the
+// encoder reads -0.6; the other leg's servo has none.
+TEST(Devices, ServoOffsetMovesTheJointAndNotItsEncoder) {
+  const double offset = 3 * std::numbers::pi / 180;
+  std::string scene = hung_nao_with(R"(<servo joint="LHipPitch" offset="3deg"/>)");
+  scene.insert(scene.find("LHipPitch=\"-0.6\""), "RHipPitch=\"-0.6\" ");
+  auto sim = test::scene_from_text(scene);
+  sim->run_for(1.0);
+  auto& robot = sim->robot(0);
+  const auto& model = robot.model();
+  EXPECT_NEAR(robot.body().joint_position(model.joint_index("LHipPitch")), -0.6 + offset, 1e-3);
+  EXPECT_NEAR(robot.body().joint_position(model.joint_index("RHipPitch")), -0.6, 1e-3);
+  const auto& encoders = robot.latest_sensors().position;
+  const double lsb = 2 * std::numbers::pi / 4096;
+  EXPECT_NEAR(encoders[hal::index(JointId::LHipPitch)], -0.6, lsb);
+  EXPECT_NEAR(encoders[hal::index(JointId::RHipPitch)], -0.6, lsb);
+}
+
 TEST(Devices, EncodersQuantiseToTwelveBits) {
   auto sim = test::scene_from_text(hanging_nao(R"(LKneePitch="0.5")"));
   sim->run_for(0.05);
