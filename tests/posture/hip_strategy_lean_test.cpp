@@ -1,7 +1,7 @@
 // The hip strategy's P term on a robot that leans: standing on flat feet, a hip-pitch calibration
 // error of 3 deg leans the torso back by about 3 deg; the correction of Eqs. 4.8 and 4.10 then
 // extends the hips by K_p times the lean, which leans the torso back by as much again, so the lean
-// settles at lean_0 / (1 - K_p). This is Sec. 4.3.4.2's "the upper body leans back as K_p rises".
+// settles at lean_0 / (1 - K_p): Sec. 4.3.4.2's torso that leans further back the larger K_p is.
 #include <cmath>
 #include <numbers>
 #include <string>
