@@ -31,7 +31,7 @@ struct Setting {
 };
 
 struct GainStats {  // one setting over the seeds
-  int walks = 0, lost = 0, kept = 0;
+  int walks = 0, lost = 0;
   double lean = 0, sway = 0, shake = 0, roll_sd = 0, kept_distance = 0;
 };
 
@@ -99,7 +99,6 @@ int run_gains_experiment(const ExperimentOptions& o, std::ostream& out) {
     if (s.fell || s.tipped != sim::Tip::None) {
       ++g.lost;
     } else {
-      ++g.kept;
       g.kept_distance += s.distance;
     }
     return true;
@@ -114,7 +113,8 @@ int run_gains_experiment(const ExperimentOptions& o, std::ostream& out) {
     const GainStats& g = stats[k];
     const double n = g.walks;
     const double lean = g.lean / n, sway = g.sway / n, shake = g.shake / n;
-    const double dist = g.kept > 0 ? g.kept_distance / g.kept : NAN;
+    const int kept = g.walks - g.lost;
+    const double dist = kept > 0 ? g.kept_distance / kept : NAN;
     const bool ankle = set.strategy != &kStrategies[0];
     table.add_row({ankle ? 1.0 : 0.0, set.kp_sweep ? 0.0 : 1.0, set.kp, set.kd, n, double(g.lost),
                    lean, sway, shake, g.roll_sd / n, dist});

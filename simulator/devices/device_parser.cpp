@@ -149,7 +149,7 @@ DeviceDescription load_device_file(const std::string& path) {
       e.allow_only({"joint", "motor", "offset"});
       ServoSpec s;
       s.joint = e.text("joint");
-      s.offset = e.has("offset") ? e.number("offset", Dimension::Angle) : 0.0;
+      s.offset = e.number_or("offset", 0.0, Dimension::Angle);
       const std::string m = e.text("motor");
       for (size_t i = 0; i < d.motors.size(); ++i)
         if (d.motors[i].name == m) s.motor = static_cast<int>(i);

@@ -1,5 +1,5 @@
 #pragma once
-// Reading <motor> overrides that a scene writes inside <robot> (the device file itself is read
+// Reading <motor> and <servo> overrides that a scene writes inside <robot> (the device file itself is read
 // by load_device_file, declared with the description).
 #include "simulator/devices/device_description.hpp"
 #include "simulator/scene/xml_element.hpp"

@@ -86,9 +86,9 @@ bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, double
   const double gear_speed = std::clamp(m.gain * (target - gear), -m.no_load_speed, m.no_load_speed);
   gear += gear_speed * step_;
   const double half = 0.5 * m.backlash;
-  const double offset = q - gear;
-  if (std::abs(offset) <= half) return false;               // free within the play
-  const double tooth = gear + std::copysign(half, offset);  // the flank the joint pushes on
+  const double from_gear = q - gear;
+  if (std::abs(from_gear) <= half) return false;               // free within the play
+  const double tooth = gear + std::copysign(half, from_gear);  // the flank the joint pushes on
   dJointSetHingeParam(
       id, dParamVel,
       std::clamp(gear_speed + m.gain * (tooth - q), -2 * m.no_load_speed, 2 * m.no_load_speed));
