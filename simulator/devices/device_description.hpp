@@ -2,6 +2,7 @@
 // What a robot's devices are and how they behave, from the device file next to its URDF.
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,12 +42,15 @@ struct MotorOverride {
   int line = 0;
 };
 
-// A scene's calibration error on one servo of the device file: <servo joint="..." offset="3deg"/>
-// inside <robot>.
+// A scene's change to one servo of the device file, inside <robot>: a calibration error
+// (<servo joint="..." offset="3deg"/>) and/or that joint's own copy of its motor with some
+// <motor> attributes changed (<servo joint="LHipRoll" spring="400"/>), the other joints on the
+// motor left as they are.
 struct ServoOverride {
   std::string joint;
-  double offset = 0;  // rad
-  std::string file;   // where it was written
+  std::optional<double> offset;         // rad; unset: the device file's
+  std::map<std::string, double> motor;  // <motor> attributes, SI units, by name
+  std::string file;                     // where it was written
   int line = 0;
 };
 

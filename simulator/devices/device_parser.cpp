@@ -46,11 +46,11 @@ constexpr MotorNumber kMotorNumbers[] = {
     {"backlash", Dimension::Angle, &MotorSpec::backlash},
 };
 
-// The attributes present on e (all > 0), by name.
-std::map<std::string, double> motor_numbers(const XmlElement& e) {
-  std::vector<std::string_view> allowed{"name"};
-  for (const MotorNumber& n : kMotorNumbers) allowed.push_back(n.attr);
-  e.allow_only(allowed);
+// The <motor> attributes present on e (all > 0), by name; e may have `others` besides.
+std::map<std::string, double> motor_numbers(const XmlElement& e,
+                                            std::vector<std::string_view> others = {"name"}) {
+  for (const MotorNumber& n : kMotorNumbers) others.push_back(n.attr);
+  e.allow_only(others);
   std::map<std::string, double> values;
   for (const MotorNumber& n : kMotorNumbers)
     if (e.has(n.attr)) values[n.attr] = positive(e, n.attr, 1.0, n.dimension);
@@ -181,24 +181,37 @@ MotorOverride motor_override(const XmlElement& e) {
 }
 
 ServoOverride servo_override(const XmlElement& e) {
-  e.allow_only({"joint", "offset"});
   ServoOverride o;
+  o.motor = motor_numbers(e, {"joint", "offset"});
   o.joint = e.text("joint");
-  o.offset = e.number("offset", Dimension::Angle);
+  if (e.has("offset")) o.offset = e.number("offset", Dimension::Angle);
+  if (!o.offset && o.motor.empty())
+    e.fail(
+        "expected an offset or a motor attribute to change (e.g. offset=\"3deg\", spring=\"400\")");
   o.file = e.file();
   o.line = e.line();
   return o;
 }
 
 void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_) {
-  for (ServoSpec& s : devices.servos)
-    if (s.joint == override_.joint) {
-      s.offset = override_.offset;
-      return;
+  const std::string where = "<servo joint=\"" + override_.joint + "\">: ";
+  for (ServoSpec& s : devices.servos) {
+    if (s.joint != override_.joint) continue;
+    if (override_.offset) s.offset = *override_.offset;
+    if (!override_.motor.empty()) {
+      // The joint gets its own copy of its motor, so the joints sharing the motor keep theirs.
+      MotorSpec own = devices.motors[s.motor];
+      set_motor_numbers(own, override_.motor);
+      if (const std::string problem = motor_problem(own); !problem.empty())
+        throw error_at(override_.file, override_.line, where + problem);
+      own.name += "@" + s.joint;
+      devices.motors.push_back(own);
+      s.motor = static_cast<int>(devices.motors.size() - 1);
     }
-  throw error_at(
-      override_.file, override_.line,
-      "<servo joint=\"" + override_.joint + "\">: no servo for that joint in " + devices.file);
+    return;
+  }
+  throw error_at(override_.file, override_.line,
+                 where + "no servo for that joint in " + devices.file);
 }
 
 void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_) {

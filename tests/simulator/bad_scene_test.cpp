@@ -126,13 +126,23 @@ TEST(BadScene, MotorOverrides) {
                "no servo for that joint");
   expect_error(robot + R"(<servo joint="LHipPitch" offset="3 bananas"/></robot></scene>)",
                "bad.xml:3", "offset");
-  expect_error(robot + R"(<servo joint="LHipPitch"/></robot></scene>)", "bad.xml:3", "offset");
+  expect_error(robot + R"(<servo joint="LHipPitch"/></robot></scene>)", "bad.xml:3",
+               "expected an offset or a motor attribute");
+  expect_error(robot + R"(<servo joint="LHipRoll" spring="0"/></robot></scene>)", "bad.xml:3",
+               "attribute 'spring': expected a value > 0");
+  expect_error(robot + R"(<servo joint="LHipRoll" integral="50"/></robot></scene>)", "bad.xml:3",
+               "<servo joint=\"LHipRoll\">: integral is only for a spring");
+  expect_error(robot + R"(<servo joint="LElbow" spring="400"/></robot></scene>)", "bad.xml:3",
+               "no servo for that joint");
   expect_error(robot + R"(<servo joint="LHipPitch" offset="1deg" motor="pitch"/></robot></scene>)",
                "bad.xml:3", "unknown attribute 'motor'");
   expect_error("<scene>\n<robot " + kNao + ">\n" +
                    R"(<servo joint="LHipPitch" offset="1deg"/></robot></scene>)",
                "bad.xml:3", "there is none");
   EXPECT_EQ(load_error(robot + R"(<motor name="pitch" gain="50" spring="150"/></robot></scene>)"),
+            "");
+  EXPECT_EQ(load_error(robot + R"(<servo joint="LHipRoll" spring="400" offset="1deg"/>)" +
+                       R"(<servo joint="RHipRoll" spring="400"/></robot></scene>)"),
             "");
 }
 

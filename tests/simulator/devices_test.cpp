@@ -163,6 +163,20 @@ TEST(Devices, ServoOffsetMovesTheJointAndNotItsEncoder) {
   EXPECT_NEAR(encoders[hal::index(JointId::RHipPitch)], -0.6, lsb);
 }
 
+// A spring on one joint's servo (<servo joint="LHipPitch" spring="60"/>) sags that joint by
+// tau / K and leaves the other hip, on the same motor of the device file, on its stiff target.
+TEST(Devices, ServoSpringChangesOnlyItsJoint) {
+  const double spring = 60;
+  std::string scene = hung_nao_with(R"(<servo joint="LHipPitch" spring="60"/>)");
+  scene.insert(scene.find("LHipPitch=\"-0.6\""), "RHipPitch=\"-0.6\" ");
+  auto sim = test::scene_from_text(scene);
+  const auto [j, q, tau] = settle_hung_hip(*sim, 3.0);
+  EXPECT_GT(std::abs(tau), 0.3);
+  EXPECT_NEAR(spring * (-0.6 - q), -tau, 0.02 * std::abs(tau));
+  const int right = sim->robot(0).model().joint_index("RHipPitch");
+  EXPECT_NEAR(sim->robot(0).body().joint_position(right), -0.6, 1e-3);
+}
+
 TEST(Devices, EncodersQuantiseToTwelveBits) {
   auto sim = test::scene_from_text(hanging_nao(R"(LKneePitch="0.5")"));
   sim->run_for(0.05);
