@@ -197,9 +197,9 @@ void apply_servo_override(DeviceDescription& devices, const ServoOverride& overr
   const std::string where = "<servo joint=\"" + override_.joint + "\">: ";
   for (ServoSpec& s : devices.servos) {
     if (s.joint != override_.joint) continue;
-    if (override_.offset) s.offset = *override_.offset;
     if (!override_.motor.empty()) {
-      // The joint gets its own copy of its motor, so the joints sharing the motor keep theirs.
+      // The joint gets its own copy of its motor, so the joints sharing the motor keep theirs;
+      // checked before anything changes.
       MotorSpec own = devices.motors[s.motor];
       set_motor_numbers(own, override_.motor);
       if (const std::string problem = motor_problem(own); !problem.empty())
@@ -208,6 +208,7 @@ void apply_servo_override(DeviceDescription& devices, const ServoOverride& overr
       devices.motors.push_back(own);
       s.motor = static_cast<int>(devices.motors.size() - 1);
     }
+    if (override_.offset) s.offset = *override_.offset;
     return;
   }
   throw error_at(override_.file, override_.line,
