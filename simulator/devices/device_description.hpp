@@ -107,8 +107,9 @@ DeviceDescription load_device_file(const std::string& path);
 // the override when the device file has no such motor or the result is inconsistent.
 void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_);
 
-// Sets the override's offset on the servo of its joint; throws stride::Error("file:line: ...")
-// at the override when the device file has no servo for that joint.
+// Sets the override's offset on the servo of its joint and gives that servo its own copy of its
+// motor with the override's attributes; throws stride::Error("file:line: ...") at the override,
+// changing nothing, when the device file has no servo for that joint or the motor is inconsistent.
 void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_);
 
 }  // namespace stride::sim

@@ -73,6 +73,17 @@ std::string motor_problem(const MotorSpec& m) {
   return {};
 }
 
+// m with a scene's attribute changes; throws at the scene's file:line, prefixed with `where`,
+// when the result is inconsistent.
+MotorSpec changed_motor(const MotorSpec& m, const std::map<std::string, double>& values,
+                        const std::string& file, int line, const std::string& where) {
+  MotorSpec changed = m;
+  set_motor_numbers(changed, values);
+  if (const std::string problem = motor_problem(changed); !problem.empty())
+    throw error_at(file, line, where + problem);
+  return changed;
+}
+
 MotorSpec motor(const XmlElement& e) {
   MotorSpec m;
   m.name = e.text("name");
@@ -200,10 +211,8 @@ void apply_servo_override(DeviceDescription& devices, const ServoOverride& overr
     if (!override_.motor.empty()) {
       // The joint gets its own copy of its motor, so the joints sharing the motor keep theirs;
       // checked before anything changes.
-      MotorSpec own = devices.motors[s.motor];
-      set_motor_numbers(own, override_.motor);
-      if (const std::string problem = motor_problem(own); !problem.empty())
-        throw error_at(override_.file, override_.line, where + problem);
+      MotorSpec own = changed_motor(devices.motors[s.motor], override_.motor, override_.file,
+                                    override_.line, where);
       own.name += "@" + s.joint;
       devices.motors.push_back(own);
       s.motor = static_cast<int>(devices.motors.size() - 1);
@@ -218,11 +227,8 @@ void apply_servo_override(DeviceDescription& devices, const ServoOverride& overr
 void apply_motor_override(DeviceDescription& devices, const MotorOverride& override_) {
   for (MotorSpec& m : devices.motors) {
     if (m.name != override_.name) continue;
-    MotorSpec changed = m;
-    set_motor_numbers(changed, override_.values);
-    if (const std::string problem = motor_problem(changed); !problem.empty())
-      throw error_at(override_.file, override_.line, "<motor name=\"" + m.name + "\">: " + problem);
-    m = changed;
+    m = changed_motor(m, override_.values, override_.file, override_.line,
+                      "<motor name=\"" + m.name + "\">: ");
     return;
   }
   throw error_at(override_.file, override_.line,
