@@ -1,6 +1,7 @@
 #include "simulator/scene/scene_parser.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "robot/core/xml_error.hpp"
 #include "simulator/devices/device_parser.hpp"
 #include "simulator/scene/xml_element.hpp"
+#include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
 namespace {
@@ -102,7 +104,7 @@ class Parser {
 
   void physics(const XmlElement& e) {
     e.allow_only({"step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp", "contact_cfm",
-                  "max_contacts", "gravity", "seed"});
+                  "contact_stiffness", "contact_damping", "max_contacts", "gravity", "seed"});
     no_children(e);
     PhysicsSettings& p = out_.physics;
     p.step = e.number_or("step", p.step, Dimension::Time);
@@ -117,9 +119,34 @@ class Parser {
     p.cfm = non_negative(e, "cfm", p.cfm);
     p.contact_erp = unit_interval(e, "contact_erp", p.contact_erp);
     p.contact_cfm = non_negative(e, "contact_cfm", p.contact_cfm);
+    contact_spring(e, p);
     p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
     p.gravity = e.vector3_or("gravity", p.gravity);
     p.seed = e.seed_or("seed", p.seed);
+  }
+
+  // contact_stiffness [N/m] and contact_damping [N s/m] per contact point: the same soft contact
+  // as contact_erp / contact_cfm, in physical units (either pair, not both).
+  static void contact_spring(const XmlElement& e, PhysicsSettings& p) {
+    const bool k = e.has("contact_stiffness"), c = e.has("contact_damping");
+    if (!k && !c) return;
+    if (k != c)
+      e.fail_attr(k ? "contact_stiffness" : "contact_damping",
+                  "expected contact_stiffness and contact_damping together");
+    for (const char* a : {"contact_erp", "contact_cfm"})
+      if (e.has(a))
+        e.fail_attr(a,
+                    "expected either contact_erp/contact_cfm or "
+                    "contact_stiffness/contact_damping, not both");
+    const double stiffness = e.number("contact_stiffness");
+    if (!(stiffness > 0) || !std::isfinite(stiffness))
+      e.fail_attr("contact_stiffness", "expected a stiffness > 0 (N/m)");
+    const double damping = e.number("contact_damping");
+    if (!(damping >= 0) || !std::isfinite(damping))
+      e.fail_attr("contact_damping", "expected a damping >= 0 (N s/m)");
+    const ContactSoftness soft = contact_softness(stiffness, damping, p.step);
+    p.contact_erp = soft.erp;
+    p.contact_cfm = soft.cfm;
   }
 
   static double unit_interval(const XmlElement& e, const char* a, double fallback) {

@@ -75,6 +75,23 @@ TEST(BadScene, PushOnMissingRobot) {
                "bad.xml:2", "no robot named 'ghost'");
 }
 
+TEST(BadScene, ContactSpringNeedsBothValuesAndNotErpCfm) {
+  expect_error("<scene>\n<physics contact_stiffness=\"4e4\"/>\n</scene>", "bad.xml:2",
+               "contact_stiffness and contact_damping together");
+  expect_error("<scene>\n<physics contact_damping=\"10\"/>\n</scene>", "bad.xml:2",
+               "contact_damping");
+  expect_error(
+      "<scene>\n<physics contact_stiffness=\"4e4\" contact_damping=\"10\" "
+      "contact_erp=\"0.5\"/>\n</scene>",
+      "bad.xml:2", "not both");
+  expect_error("<scene>\n<physics contact_stiffness=\"-1\" contact_damping=\"10\"/>\n</scene>",
+               "bad.xml:2", "stiffness > 0");
+  expect_error("<scene>\n<physics contact_stiffness=\"4e4\" contact_damping=\"-2\"/>\n</scene>",
+               "bad.xml:2", "damping >= 0");
+  expect_error("<scene>\n<physics contact_stiffness=\"inf\" contact_damping=\"1\"/>\n</scene>",
+               "bad.xml:2", "contact_stiffness");
+}
+
 TEST(BadScene, UnitOfTheWrongKind) {
   expect_error("<scene>\n<physics step=\"5deg\"/>\n</scene>", "bad.xml:2", "expected a time");
 }

@@ -1,6 +1,7 @@
 // The physics engine against closed-form mechanics: free fall, a pendulum, friction on a ramp.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -101,6 +102,42 @@ TEST(ClosedFormPhysics, BoxSlidesOnTenDegreeRampWithLowFriction) {
 TEST(ClosedFormPhysics, BoxHoldsOnTenDegreeRampWithHighFriction) {
   const Slide s = slide_on_ramp(0.3);  // tan(10 deg) = 0.176 < 0.3: static friction holds
   EXPECT_LT(std::abs(s.distance), 0.002);
+}
+
+// A 1 kg ball set down on a contact spring k with damper c: a damped oscillator about the sink
+// m g / k, period 2 pi / (w sqrt(1 - z^2)), w = sqrt(k / m), z = c / (2 sqrt(k m)). The spring
+// acts below the world's 0.5 mm contact surface layer, where the ball starts at rest.
+TEST(ClosedFormPhysics, BallOnContactSpringSinksAndRingsAsAnOscillator) {
+  const double k = 2e4, c = 20, m = 1;
+  auto sim = test::scene_from_text(R"(<scene>
+    <physics solver="exact" contact_stiffness="2e4" contact_damping="20"/>
+    <robot name="ball" urdf="sphere.urdf" xyz="0 0 0.0495"/></scene>)");
+  const double rest = 0.0495;  // radius less the surface layer: the spring's zero
+  const double w = std::sqrt(k / m), zeta = c / (2 * std::sqrt(k * m));
+  const double period = 2 * std::numbers::pi / (w * std::sqrt(1 - zeta * zeta));
+  const double sink = m * kG / k;
+  // Deepest points of the first rings: their spacing is the damped period.
+  std::vector<double> troughs;
+  double prev = rest, prev2 = rest, deepest = rest;
+  while (sim->time() < 0.3) {
+    sim->step();
+    const double z = sim->robot(0).torso_pose().z;
+    if (prev < prev2 && prev <= z) troughs.push_back(sim->time() - sim->scene().physics.step);
+    deepest = std::min(deepest, z);
+    prev2 = prev;
+    prev = z;
+  }
+  ASSERT_GE(troughs.size(), 3u);
+  const double measured = (troughs[2] - troughs[0]) / 2;
+  RecordProperty("period_s", std::to_string(measured));
+  RecordProperty("closed_form_period_s", std::to_string(period));
+  EXPECT_NEAR(measured, period, 0.05 * period);
+  // Lightly damped: the first swing goes well past the rest sink (closed form 1.80 x).
+  RecordProperty("first_swing_over_sink", std::to_string((rest - deepest) / sink));
+  EXPECT_GT(rest - deepest, 1.5 * sink);  // implicit Euler damps it a little: 1.64 at 1 ms
+  EXPECT_LT(rest - deepest, 2.0 * sink);
+  sim->run_for(3.0);
+  EXPECT_NEAR(rest - sim->robot(0).torso_pose().z, sink, 0.01 * sink);
 }
 
 }  // namespace
