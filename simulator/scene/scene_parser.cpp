@@ -1,7 +1,6 @@
 #include "simulator/scene/scene_parser.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -139,11 +138,10 @@ class Parser {
                     "expected either contact_erp/contact_cfm or "
                     "contact_stiffness/contact_damping, not both");
     const double stiffness = e.number("contact_stiffness");
-    if (!(stiffness > 0) || !std::isfinite(stiffness))
+    if (!(stiffness > 0))  // number() already rejects non-finite text
       e.fail_attr("contact_stiffness", "expected a stiffness > 0 (N/m)");
     const double damping = e.number("contact_damping");
-    if (!(damping >= 0) || !std::isfinite(damping))
-      e.fail_attr("contact_damping", "expected a damping >= 0 (N s/m)");
+    if (!(damping >= 0)) e.fail_attr("contact_damping", "expected a damping >= 0 (N s/m)");
     const ContactSoftness soft = contact_softness(stiffness, damping, p.step);
     p.contact_erp = soft.erp;
     p.contact_cfm = soft.cfm;

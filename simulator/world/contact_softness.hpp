@@ -3,8 +3,8 @@
 namespace stride::sim {
 
 struct ContactSoftness {
-  double erp = 0.2;
-  double cfm = 1e-4;
+  double erp;
+  double cfm;
 };
 
 // ODE's soft-constraint mapping for one contact point: stiffness [N/m] and damping [N s/m] at
