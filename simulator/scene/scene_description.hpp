@@ -23,6 +23,9 @@ struct PhysicsSettings {
   double cfm = 1e-5;
   double contact_erp = 0.2;
   double contact_cfm = 1e-4;
+  // contact_spring_per="body": contact_erp/cfm stand for a body's whole contact with the static
+  // scene, shared over however many points the collider finds for it in a step.
+  bool contact_spring_per_body = false;
   int max_contacts = 8;  // per colliding geometry pair
   Eigen::Vector3d gravity{0, 0, -9.81};
   std::uint64_t seed = 1;

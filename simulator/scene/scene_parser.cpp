@@ -103,7 +103,8 @@ class Parser {
 
   void physics(const XmlElement& e) {
     e.allow_only({"step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp", "contact_cfm",
-                  "contact_stiffness", "contact_damping", "max_contacts", "gravity", "seed"});
+                  "contact_stiffness", "contact_damping", "contact_spring_per", "max_contacts",
+                  "gravity", "seed"});
     no_children(e);
     PhysicsSettings& p = out_.physics;
     p.step = e.number_or("step", p.step, Dimension::Time);
@@ -119,6 +120,9 @@ class Parser {
     p.contact_erp = unit_interval(e, "contact_erp", p.contact_erp);
     p.contact_cfm = non_negative(e, "contact_cfm", p.contact_cfm);
     contact_spring(e, p);
+    p.contact_spring_per_body = e.choice_or("contact_spring_per", {"point", "body"}, 0) == 1;
+    if (p.contact_spring_per_body && !e.has("contact_stiffness"))
+      e.fail_attr("contact_spring_per", "expected contact_stiffness and contact_damping with it");
     p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
     p.gravity = e.vector3_or("gravity", p.gravity);
     p.seed = e.seed_or("seed", p.seed);

@@ -110,18 +110,45 @@ void PhysicsWorld::collide_pair(dGeomID g1, dGeomID g2) {
     c.surface.soft_erp = physics_.contact_erp;
     c.surface.soft_cfm = physics_.contact_cfm;
     c.geom = geoms[k];
-    dJointID j = dJointCreateContact(world_, contact_group_, &c);
-    dJointAttach(j, b1, b2);
+    pending_.push_back({c, b1, b2, i1, i2});
+  }
+}
+
+// Joins the step's contacts in the order they were found. Per body, a body's n points against
+// the static scene each get 1/n of its spring and damper: the same ERP, n times the CFM.
+void PhysicsWorld::create_contact_joints() {
+  points_per_body_.clear();
+  const auto static_side = [](const PendingContact& p) {
+    return p.b1 && p.b2 ? nullptr : (p.b1 ? p.b1 : p.b2);
+  };
+  if (physics_.contact_spring_per_body)
+    for (const PendingContact& p : pending_)
+      if (dBodyID b = static_side(p)) {
+        auto it = std::find_if(points_per_body_.begin(), points_per_body_.end(),
+                               [b](const auto& e) { return e.first == b; });
+        if (it == points_per_body_.end())
+          points_per_body_.emplace_back(b, 1);
+        else
+          ++it->second;
+      }
+  for (PendingContact& p : pending_) {
+    if (physics_.contact_spring_per_body)
+      if (dBodyID b = static_side(p))
+        for (const auto& [body, count] : points_per_body_)
+          if (body == b) p.contact.surface.soft_cfm *= count;
+    dJointID j = dJointCreateContact(world_, contact_group_, &p.contact);
+    dJointAttach(j, p.b1, p.b2);
     if (contacts_.size() < feedback_.size()) {
       ContactRecord rec;
-      rec.a = i1;
-      rec.b = i2;
-      for (int d = 0; d < 3; ++d) rec.position[d] = geoms[k].pos[d];
+      rec.a = p.i1;
+      rec.b = p.i2;
+      for (int d = 0; d < 3; ++d) rec.position[d] = p.contact.geom.pos[d];
       rec.feedback = &feedback_[contacts_.size()];
       dJointSetFeedback(j, rec.feedback);
       contacts_.push_back(rec);
     }
   }
+  pending_.clear();
 }
 
 void PhysicsWorld::collide_with_static() {
@@ -151,6 +178,7 @@ void PhysicsWorld::step() {
     self_candidates_.rebuild(robot_space_);
   if (self_candidates_.any_overlap()) dSpaceCollide(robot_space_, this, &near_callback);
   collide_with_static();
+  create_contact_joints();
   // Each world keeps its own copy of ODE's generator so worlds and resets do not disturb each
   // other.
   dRandSetSeed(rand_state_);

@@ -45,6 +45,14 @@ class PhysicsWorld {
   static void near_callback(void* data, dGeomID g1, dGeomID g2);
   void collide_pair(dGeomID g1, dGeomID g2);
   void collide_with_static();
+  void create_contact_joints();
+
+  struct PendingContact {
+    dContact contact;
+    dBodyID b1, b2;
+    const GeomInfo* i1;
+    const GeomInfo* i2;
+  };
 
   PhysicsSettings physics_;
   dWorldID world_ = nullptr;
@@ -54,6 +62,8 @@ class PhysicsWorld {
   std::deque<GeomInfo> infos_;
   std::vector<dJointFeedback> feedback_;  // fixed capacity: pointers stay valid within a step
   std::vector<ContactRecord> contacts_;
+  std::vector<PendingContact> pending_;  // this step's contacts, joined after all collisions
+  std::vector<std::pair<dBodyID, int>> points_per_body_;
   std::function<bool(const GeomInfo&, const GeomInfo&)> self_filter_;
   int static_geoms_ = 0;
   SelfContactCandidates self_candidates_;        // rebuilt when the robot geom count changes

@@ -90,6 +90,12 @@ TEST(BadScene, ContactSpringNeedsBothValuesAndNotErpCfm) {
                "bad.xml:2", "damping >= 0");
   expect_error("<scene>\n<physics contact_stiffness=\"inf\" contact_damping=\"1\"/>\n</scene>",
                "bad.xml:2", "contact_stiffness");
+  expect_error("<scene>\n<physics contact_spring_per=\"body\"/>\n</scene>", "bad.xml:2",
+               "contact_spring_per");
+  expect_error(
+      "<scene>\n<physics contact_stiffness=\"4e4\" contact_damping=\"10\" "
+      "contact_spring_per=\"foot\"/>\n</scene>",
+      "bad.xml:2", "contact_spring_per");
 }
 
 TEST(BadScene, UnitOfTheWrongKind) {

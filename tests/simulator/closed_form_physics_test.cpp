@@ -140,5 +140,27 @@ TEST(ClosedFormPhysics, BallOnContactSpringSinksAndRingsAsAnOscillator) {
   EXPECT_NEAR(rest - sim->robot(0).torso_pose().z, sink, 0.01 * sink);
 }
 
+// The same spring per body: a 2 kg block sinks m g / k whether the collider holds it on the
+// ground's 4 corner points or on a box's, and a per-point spring on 4 points sinks a quarter.
+double block_sink(const std::string& spring_per, bool on_box) {
+  const std::string xml = std::string(R"(<scene><physics solver="exact" contact_stiffness="2e4"
+      contact_damping="200" contact_spring_per=")") +
+                          spring_per + R"("/>)" +
+                          (on_box ? R"(<ground enabled="false"/>
+      <box name="table" size="0.5 0.5 0.1" xyz="0 0 -0.05"/>)"
+                                  : "") +
+                          R"(<robot name="b" urdf="block.urdf" xyz="0 0 0.0195"/></scene>)";
+  auto sim = test::scene_from_text(xml);
+  sim->run_for(2.0);
+  return 0.0195 - sim->robot(0).torso_pose().z;  // half height less the surface layer
+}
+
+TEST(ClosedFormPhysics, ContactSpringPerBodyIsTheBodysWholeSpring) {
+  const double sink = 2 * kG / 2e4;
+  EXPECT_NEAR(block_sink("body", false), sink, 0.02 * sink);
+  EXPECT_NEAR(block_sink("body", true), sink, 0.02 * sink);
+  EXPECT_NEAR(block_sink("point", false), sink / 4, 0.02 * sink / 4);
+}
+
 }  // namespace
 }  // namespace stride
