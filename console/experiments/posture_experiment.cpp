@@ -156,9 +156,11 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
               rows);
   std::vector<std::vector<std::string>> tally_rows;
   for (std::size_t k = 0; k < tallies.size(); ++k)
-    tally_rows.push_back(tally_row(posture_cases()[k].scene, tallies[k]));
+    tally_rows.push_back(
+        tally_row(posture_cases()[k].scene, tallies[k], posture_cases()[k].thesis_distance));
   out << "\nPer case: lost = fell or torso past " << sim::kTipAngle
-      << " rad (first way: fwd/back/right/left); kept walks' mean distance and largest |pitch|\n";
+      << " rad (first way: fwd/back/right/left); kept walks' mean distance (ground truth, FK) "
+         "and largest |pitch|\n";
   print_table(out, tally_header(), tally_rows);
   if (files) plot::write_csv(o.out_dir + "/posture_summary.csv", summary);
   return 0;

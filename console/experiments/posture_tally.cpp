@@ -14,15 +14,17 @@ void add_walk(PostureTally& t, const WalkSummary& s) {
   if (s.fell || tipped) return;
   ++t.kept;
   t.kept_distance_sum += s.distance;
+  t.kept_fk_distance_sum += s.fk_distance;
   t.kept_max_pitch = std::max({t.kept_max_pitch, -s.pitch_min, s.pitch_max});
 }
 
 std::vector<std::string> tally_header() {
-  return {"case", "walks",   "fell",      "tipped", "lost", "fwd/back/right/left",
-          "kept", "dist[m]", "max|pitch|"};
+  return {"case", "walks",   "fell",  "tipped",    "lost",      "fwd/back/right/left",
+          "kept", "dist[m]", "fk[m]", "thesis[m]", "max|pitch|"};
 }
 
-std::vector<std::string> tally_row(const std::string& name, const PostureTally& t) {
+std::vector<std::string> tally_row(const std::string& name, const PostureTally& t,
+                                   double thesis_distance) {
   const auto& w = t.tip_way;
   const bool any = t.kept > 0;
   return {name,
@@ -34,6 +36,8 @@ std::vector<std::string> tally_row(const std::string& name, const PostureTally& 
               std::to_string(w[3]),
           std::to_string(t.kept),
           any ? fixed(t.kept_distance_sum / t.kept, 3) : "-",
+          any ? fixed(t.kept_fk_distance_sum / t.kept, 3) : "-",
+          thesis_distance > 0 ? fixed(thesis_distance, 3) : "-",
           any ? fixed(t.kept_max_pitch, 3) : "-"};
 }
 

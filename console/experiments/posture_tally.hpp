@@ -12,10 +12,11 @@ namespace stride::experiments {
 struct PostureTally {
   int walks = 0;
   int fell = 0;
-  std::array<int, 4> tip_way{};  // forward, backward, right, left: the first pass of kTipAngle
-  int kept = 0;                  // neither fell nor tipped
-  double kept_distance_sum = 0;  // m
-  double kept_max_pitch = 0;     // rad, the largest |pitch| of a kept walk
+  std::array<int, 4> tip_way{};     // forward, backward, right, left: the first pass of kTipAngle
+  int kept = 0;                     // neither fell nor tipped
+  double kept_distance_sum = 0;     // m, ground truth
+  double kept_fk_distance_sum = 0;  // m, the thesis' FK measure
+  double kept_max_pitch = 0;        // rad, the largest |pitch| of a kept walk
 
   int tipped() const { return tip_way[0] + tip_way[1] + tip_way[2] + tip_way[3]; }
   int lost() const { return walks - kept; }  // fell or tipped
@@ -23,8 +24,10 @@ struct PostureTally {
 
 void add_walk(PostureTally& t, const WalkSummary& s);
 
-// `case walks fell tipped lost fwd/back/right/left kept-mean-distance kept-max-pitch`, as text.
-std::vector<std::string> tally_row(const std::string& name, const PostureTally& t);
+// `case walks fell tipped lost fwd/back/right/left kept-mean-distance kept-mean-fk-distance
+// thesis-distance kept-max-pitch`, as text; `thesis_distance` is the case's printed figure (m).
+std::vector<std::string> tally_row(const std::string& name, const PostureTally& t,
+                                   double thesis_distance);
 std::vector<std::string> tally_header();
 
 }  // namespace stride::experiments
