@@ -1,6 +1,7 @@
 #include "console/experiments/posture_tally.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "console/experiments/experiment_options.hpp"
 
@@ -37,7 +38,7 @@ std::vector<std::string> tally_row(const std::string& name, const PostureTally& 
           std::to_string(t.kept),
           any ? fixed(t.kept_distance_sum / t.kept, 3) : "-",
           any ? fixed(t.kept_fk_distance_sum / t.kept, 3) : "-",
-          thesis_distance > 0 ? fixed(thesis_distance, 3) : "-",
+          std::isfinite(thesis_distance) ? fixed(thesis_distance, 3) : "-",
           any ? fixed(t.kept_max_pitch, 3) : "-"};
 }
 

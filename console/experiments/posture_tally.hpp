@@ -25,7 +25,8 @@ struct PostureTally {
 void add_walk(PostureTally& t, const WalkSummary& s);
 
 // `case walks fell tipped lost fwd/back/right/left kept-mean-distance kept-mean-fk-distance
-// thesis-distance kept-max-pitch`, as text; `thesis_distance` is the case's printed figure (m).
+// thesis-distance kept-max-pitch`, as text; `thesis_distance` is the case's printed figure (m),
+// NaN where the thesis prints none.
 std::vector<std::string> tally_row(const std::string& name, const PostureTally& t,
                                    double thesis_distance);
 std::vector<std::string> tally_header();
