@@ -26,6 +26,10 @@ class GyroCalibration final : public Module {
 
   void update() override {
     const Eigen::Vector2d measured = inertial_.gyro.head<2>();
+    if (!started_) {
+      if (params_.start_at_first_sample) out_.offset = measured;
+      started_ = true;
+    }
     out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eqs. 4.1-4.2
     out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eqs. 4.3-4.4
   }
@@ -34,6 +38,7 @@ class GyroCalibration final : public Module {
   const InertialSensorData& inertial_;
   const GyroCalibrationParameters& params_;
   CalibratedGyro& out_;
+  bool started_ = false;
 };
 
 class TorsoStateEstimator final : public Module {

@@ -15,10 +15,15 @@ namespace stride::behaviours {
 
 struct GyroCalibrationParameters {
   double alpha = 0.001;  // Sec. 4.3.1
+  // C starts at the first raw sample, as if the robot had stood long enough for Eqs. 4.1-4.2 to
+  // settle (1/alpha = 10 s at 10 ms); false starts it at 0.
+  bool start_at_first_sample = true;
 
   static constexpr std::string_view kTypeName = "GyroCalibrationParameters";
   static constexpr auto fields() {
-    return std::make_tuple(field("alpha", &GyroCalibrationParameters::alpha, "", Range{0, 1}));
+    using P = GyroCalibrationParameters;
+    return std::make_tuple(field("alpha", &P::alpha, "", Range{0, 1}),
+                           field("start_at_first_sample", &P::start_at_first_sample));
   }
 };
 

@@ -30,6 +30,12 @@ std::vector<Eigen::Vector2d> angles(const std::vector<Eigen::Vector4d>& x) {
   return a;
 }
 
+std::vector<Eigen::Vector2d> rates(const std::vector<Eigen::Vector4d>& x) {
+  std::vector<Eigen::Vector2d> a;
+  for (const auto& v : x) a.push_back(v.tail<2>());
+  return a;
+}
+
 }  // namespace
 
 int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
@@ -92,6 +98,26 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
               {"estimate", "Q diag", "R diag", "RMS pitch [mrad]", "RMS roll [mrad]",
                "lag pitch [ms]", "lag roll [ms]"},
               rows);
+
+  // The rates the D terms of Eqs. 4.8-4.9 act on, with the gyro offset started either way.
+  std::vector<Eigen::Vector2d> online_rate;
+  for (const auto& row : rec.trace.rows)
+    online_rate.push_back({row[col(Trace::est_pitch_rate)], row[col(Trace::est_roll_rate)]});
+  std::vector<std::vector<std::string>> rate_rows;
+  auto add_rate = [&](const std::string& what, const std::vector<Eigen::Vector2d>& estimate) {
+    const EstimateScore s = score_estimate(estimate, series.truth_rate, rec.period, first);
+    rate_rows.push_back({what, fixed(s.rms_pitch * 1e3, 1), fixed(s.rms_roll * 1e3, 1),
+                         fixed(s.lag_pitch * 1e3, 0), fixed(s.lag_roll * 1e3, 0)});
+  };
+  add_rate("calibrated gyro, C from its first sample", rates(series.y));
+  add_rate("calibrated gyro, C from 0", rates(kalman_series(rec, 0.001, false).y));
+  add_rate("TorsoStateEstimator online", online_rate);
+  add_rate("chosen Q/R offline", rates(estimates.back()));
+  out << "Torso rates against ground truth, errors after the first 1 s\n";
+  print_table(out,
+              {"estimate", "RMS pitch rate [mrad/s]", "RMS roll rate [mrad/s]", "lag pitch [ms]",
+               "lag roll [ms]"},
+              rate_rows);
   if (files) {
     for (std::size_t i = 0; i < settings.size(); ++i)
       fig.columns.push_back("pitch_" + std::to_string(i + 1));

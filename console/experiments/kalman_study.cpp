@@ -9,16 +9,20 @@
 
 namespace stride::experiments {
 
-KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha) {
+KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start_at_first_sample) {
   KalmanSeries s;
   s.period = r.period;
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // (roll, pitch) rates as the gyro orders them
+  bool first = true;
   for (const auto& row : r.trace.rows) {
     const Eigen::Vector2d measured(row[col(Trace::gyro_roll)], row[col(Trace::gyro_pitch)]);
+    if (first && start_at_first_sample) offset = measured;
+    first = false;
     offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);  // Eqs. 4.1-4.2
     const Eigen::Vector2d rate = behaviours::calibrated_gyro_rate(measured, offset);  // 4.3-4.4
     s.y.push_back({row[col(Trace::imu_pitch)], row[col(Trace::imu_roll)], rate.y(), rate.x()});
     s.truth.push_back({row[col(Trace::true_pitch)], row[col(Trace::true_roll)]});
+    s.truth_rate.push_back({row[col(Trace::true_pitch_rate)], row[col(Trace::true_roll_rate)]});
   }
   return s;
 }

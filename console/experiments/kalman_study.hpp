@@ -13,12 +13,15 @@ namespace stride::experiments {
 // Measurements y_k = [pitch, roll, pitch_rate, roll_rate] (Eq. 4.7) and the true angles.
 struct KalmanSeries {
   std::vector<Eigen::Vector4d> y;
-  std::vector<Eigen::Vector2d> truth;  // pitch, roll
+  std::vector<Eigen::Vector2d> truth;       // pitch, roll
+  std::vector<Eigen::Vector2d> truth_rate;  // pitch rate, roll rate
   double period = 0.01;
 };
 
-// From a trace: IMU angles, gyro rates with the running offset of Eqs. 4.1-4.4 (alpha) removed.
-KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha = 0.001);
+// From a trace: IMU angles, gyro rates with the running offset of Eqs. 4.1-4.4 (alpha) removed;
+// the offset starts at the first sample or at 0, as GyroCalibration's start_at_first_sample.
+KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha = 0.001,
+                           bool start_at_first_sample = true);
 
 // The filter of Sec. 4.3.2 over the whole series; returns x_{k|k} for every k.
 std::vector<Eigen::Vector4d> filter_series(const KalmanSeries& s, const Eigen::Vector4d& q,

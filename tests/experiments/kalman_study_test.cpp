@@ -48,6 +48,28 @@ TEST(KalmanStudy, FilterFollowsANoiseFreeConstantRateAndMismatchedSizesAreAnErro
   EXPECT_THROW(score_estimate(shorter, s.truth, 0.01, 0), Error);
 }
 
+TEST(KalmanStudy, GyroOffsetStartsAtTheFirstSampleOrAtZero) {
+  WalkRecording r;
+  r.period = 0.01;
+  r.trace.columns = trace_columns();
+  for (int k = 0; k < 100; ++k) {
+    std::vector<double> row(trace_columns().size(), 0.0);
+    row[col(Trace::gyro_pitch)] = -0.314;  // the thesis' -18 deg/s, torso still
+    row[col(Trace::gyro_roll)] = 0.02;
+    r.trace.add_row(std::move(row));
+  }
+  const KalmanSeries settled = kalman_series(r);
+  const KalmanSeries from_zero = kalman_series(r, 0.001, false);
+  ASSERT_EQ(settled.y.size(), 100u);
+  for (int k : {0, 99}) {
+    EXPECT_NEAR(settled.y[k][2], 0, 1e-15) << k;
+    EXPECT_NEAR(settled.y[k][3], 0, 1e-15) << k;
+    EXPECT_NEAR(from_zero.y[k][2], -0.314 * std::pow(0.999, k + 1), 1e-12) << k;  // Eqs. 4.2, 4.4
+    EXPECT_NEAR(from_zero.y[k][3], 0.02 * std::pow(0.999, k + 1), 1e-12) << k;
+  }
+  EXPECT_EQ(settled.truth_rate.size(), 100u);
+}
+
 TEST(KalmanStudy, CorrelationOfASeriesWithItselfAndItsNegation) {
   const std::vector<double> a{1, 3, 2, 5, 4}, b{-1, -3, -2, -5, -4}, c{2, 2, 2, 2, 2};
   EXPECT_NEAR(correlation(a, a), 1.0, 1e-12);

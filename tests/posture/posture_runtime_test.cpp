@@ -101,6 +101,7 @@ TEST(PostureModules, LeaningTorsoIsEstimatedAndCorrectedAndStrategiesSwapMidRun)
   const ModuleRegistry registry = posture_registry();
   LeaningLink link;
   Runtime rt(registry, posture_config(), link);
+  rt.set_parameters("GyroCalibration", "start_at_first_sample=false");  // C from 0, Eq. 4.2
   const int frames = 3000;  // 30 s: the gyro offset is (1 - 0.001)^3000 = 5 % of its start
   for (int i = 0; i < frames; ++i) ASSERT_TRUE(rt.step());
   const auto& gyro = rt.representation<CalibratedGyro>();
@@ -142,6 +143,23 @@ TEST(PostureModules, LeaningTorsoIsEstimatedAndCorrectedAndStrategiesSwapMidRun)
   ASSERT_TRUE(rt.step());
   EXPECT_LT(request[lhp], reference[lhp]);  // hip strategy again
   EXPECT_EQ(request[lap], reference[lap]);
+}
+
+TEST(PostureModules, GyroOffsetStartsAtTheFirstSampleByDefault) {
+  const ModuleRegistry registry = posture_registry();
+  LeaningLink link;
+  Runtime rt(registry, posture_config(), link);
+  const auto& gyro = rt.representation<CalibratedGyro>();
+  ASSERT_TRUE(rt.step());
+  EXPECT_NEAR(gyro.offset.x(), link.gyro_bias_x, 1e-15);  // not the (1 - 0.999) of a start at 0
+  EXPECT_NEAR(gyro.offset.y(), link.gyro_bias_y, 1e-15);
+  EXPECT_NEAR(gyro.rate.norm(), 0, 1e-15);
+  // A new bias is then followed at the thesis' rate: half of it after ln 2 / alpha frames.
+  link.gyro_bias_y = 0;
+  for (int i = 0; i < 693; ++i) ASSERT_TRUE(rt.step());
+  EXPECT_NEAR(gyro.offset.y(), -0.314 * std::pow(0.999, 693), 1e-12);  // Eq. 4.2
+  EXPECT_NEAR(gyro.offset.y(), -0.157, 2e-4);
+  EXPECT_NEAR(gyro.offset.x(), link.gyro_bias_x, 1e-15);
 }
 
 TEST(PostureModules, ArmSwingMovesTheArmAgainstTheForwardLeg) {
