@@ -9,6 +9,13 @@ namespace stride::behaviours {
 Eigen::Vector2d updated_gyro_offset(const Eigen::Vector2d& offset, const Eigen::Vector2d& measured,
                                     double alpha);
 
+// C before its first update: the first raw sample (a calibration settled while the robot stood)
+// or, as Eqs. 4.1-4.2 leave it unstated, 0.
+inline Eigen::Vector2d initial_gyro_offset(const Eigen::Vector2d& first_sample,
+                                           bool start_at_first_sample) {
+  return start_at_first_sample ? first_sample : Eigen::Vector2d::Zero();
+}
+
 // Eqs. 4.3-4.4: calibrated rate = measured - C.
 inline Eigen::Vector2d calibrated_gyro_rate(const Eigen::Vector2d& measured,
                                             const Eigen::Vector2d& offset) {

@@ -26,10 +26,8 @@ class GyroCalibration final : public Module {
 
   void update() override {
     const Eigen::Vector2d measured = inertial_.gyro.head<2>();
-    if (!started_) {
-      if (params_.start_at_first_sample) out_.offset = measured;
-      started_ = true;
-    }
+    if (!started_) out_.offset = initial_gyro_offset(measured, params_.start_at_first_sample);
+    started_ = true;
     out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eqs. 4.1-4.2
     out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eqs. 4.3-4.4
   }

@@ -12,12 +12,15 @@ namespace stride::experiments {
 KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start_at_first_sample) {
   KalmanSeries s;
   s.period = r.period;
-  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // (roll, pitch) rates as the gyro orders them
-  bool first = true;
+  // (roll, pitch) rates as the gyro orders them
+  auto gyro = [](const std::vector<double>& row) {
+    return Eigen::Vector2d(row[col(Trace::gyro_roll)], row[col(Trace::gyro_pitch)]);
+  };
+  if (r.trace.rows.empty()) return s;
+  Eigen::Vector2d offset =
+      behaviours::initial_gyro_offset(gyro(r.trace.rows.front()), start_at_first_sample);
   for (const auto& row : r.trace.rows) {
-    const Eigen::Vector2d measured(row[col(Trace::gyro_roll)], row[col(Trace::gyro_pitch)]);
-    if (first && start_at_first_sample) offset = measured;
-    first = false;
+    const Eigen::Vector2d measured = gyro(row);
     offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);  // Eqs. 4.1-4.2
     const Eigen::Vector2d rate = behaviours::calibrated_gyro_rate(measured, offset);  // 4.3-4.4
     s.y.push_back({row[col(Trace::imu_pitch)], row[col(Trace::imu_roll)], rate.y(), rate.x()});

@@ -35,5 +35,14 @@ TEST(GyroCalibration, AlphaZeroKeepsTheOffsetAndAlphaOneTakesTheSample) {
   EXPECT_EQ(calibrated_gyro_rate(sample, sample), Eigen::Vector2d::Zero());
 }
 
+TEST(GyroCalibration, InitialOffsetIsTheFirstSampleOrZero) {
+  const Eigen::Vector2d first(0.02, -0.314);
+  EXPECT_EQ(initial_gyro_offset(first, true), first);
+  EXPECT_EQ(initial_gyro_offset(first, false), Eigen::Vector2d::Zero());
+  // Started at the sample, a constant bias is removed from the first calibrated rate on.
+  const Eigen::Vector2d c = updated_gyro_offset(initial_gyro_offset(first, true), first, 0.001);
+  EXPECT_NEAR(calibrated_gyro_rate(first, c).norm(), 0, 1e-15);
+}
+
 }  // namespace
 }  // namespace stride::behaviours
