@@ -1,6 +1,7 @@
 #include "simulator/run_report.hpp"
 
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 
 #include "robot/core/json_writer.hpp"
@@ -40,6 +41,11 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
     j.begin_object();
     j.field("name", r.name());
     j.field("fell", r.fallen());
+    if (!r.calibration_errors().empty()) {
+      j.key("calibration_errors").begin_object();  // rad, the zero errors this seed drew
+      for (const auto& [joint, error] : r.calibration_errors()) j.field(joint, error);
+      j.end_object();
+    }
     j.key("torso").begin_object();
     j.field("x", p.x).field("y", p.y).field("z", p.z);
     j.field("roll", p.roll).field("pitch", p.pitch).field("yaw", p.yaw);
@@ -85,6 +91,14 @@ std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
       << (r.fallen() ? "FELL" : "upright") << "\n";
     const WalkMetricsResult w = sim.walk_metrics(i).result();
     if (w.steps > 0) o << "  walk: " << walk_metrics_text(w) << "\n";
+    if (!r.calibration_errors().empty()) {
+      o << "  calibration errors [deg]:";
+      o.precision(2);
+      for (const auto& [joint, error] : r.calibration_errors())
+        o << " " << joint << " " << std::showpos << error * 180 / std::numbers::pi
+          << std::noshowpos;
+      o << "\n";
+    }
   }
   return o.str();
 }

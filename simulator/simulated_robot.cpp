@@ -6,6 +6,7 @@
 #include "robot/core/pose.hpp"
 #include "robot/model/link_poses.hpp"
 #include "robot/model/urdf_loader.hpp"
+#include "simulator/devices/calibration_spread.hpp"
 
 namespace stride::sim {
 namespace {
@@ -52,6 +53,15 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
     if (placement.period > 0) devices_.period = placement.period;  // the scene's choice wins
     for (const MotorOverride& o : placement.motors) apply_motor_override(devices_, o);
     for (const ServoOverride& o : placement.servos) apply_servo_override(devices_, o);
+    if (placement.calibration) {
+      MimicJoints mimic;
+      for (const auto& jt : model_->joints)
+        if (jt.mimic_of >= 0)
+          mimic[jt.name] = {model_->joints[jt.mimic_of].name, jt.mimic_multiplier};
+      // Its own stream: adding a calibration leaves every other device's noise as it was.
+      NoiseSource noise = NoiseSource::for_stream(scene_seed, placement.name + "/calibration");
+      calibration_errors_ = draw_calibration_errors(devices_, *placement.calibration, mimic, noise);
+    }
   } catch (const Error& e) {
     throw error_at(placement.file, placement.line,
                    "<robot name=\"" + placement.name + "\">: " + e.what());

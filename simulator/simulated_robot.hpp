@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "robot/hal/hardware_link.hpp"
@@ -45,6 +46,10 @@ class SimulatedRobot : public hal::HardwareLink {
   const RobotBody& body() const { return *body_; }
   const DeviceDescription& devices() const { return devices_; }
   const RobotPlacement& placement() const { return placement_; }
+  // The zero errors <calibration> drew for this seed, by joint (empty without one).
+  const std::vector<std::pair<std::string, double>>& calibration_errors() const {
+    return calibration_errors_;
+  }
   const hal::SensorFrame& latest_sensors() const { return delivered_; }
   const hal::ActuatorFrame& latest_commands() const { return commands_; }
   SensorSwitches& sensor_switches() { return switches_; }
@@ -74,6 +79,7 @@ class SimulatedRobot : public hal::HardwareLink {
   std::deque<ImuReading> imu_queue_;
   hal::SensorFrame delivered_;
   std::vector<double> currents_;
+  std::vector<std::pair<std::string, double>> calibration_errors_;
 };
 
 }  // namespace stride::sim

@@ -54,6 +54,17 @@ struct ServoOverride {
   int line = 0;
 };
 
+// <calibration sd="0.5deg" [joints="LHipPitch RKneePitch ..."]/> in a scene's <robot>: each named
+// servo (default: every leg servo) gets a zero error drawn from N(0, sd) with the scene seed, so a
+// batch of walks over seeds meets a differently calibrated robot each time, as the thesis' NAO
+// stood differently each time from its joints' zero positions (Sec. 4.3.2).
+struct CalibrationSpread {
+  double sd = 0;                    // rad
+  std::vector<std::string> joints;  // empty: the leg servos
+  std::string file;                 // where it was written
+  int line = 0;
+};
+
 struct ServoSpec {
   std::string joint;  // URDF joint name
   int motor = -1;     // index into DeviceDescription::motors

@@ -1,5 +1,7 @@
+#include <algorithm>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
@@ -202,6 +204,28 @@ ServoOverride servo_override(const XmlElement& e) {
   o.file = e.file();
   o.line = e.line();
   return o;
+}
+
+CalibrationSpread calibration_spread(const XmlElement& e) {
+  e.allow_only({"sd", "joints"});
+  CalibrationSpread c;
+  c.sd = e.number("sd", Dimension::Angle);
+  constexpr double kLargest = 10 * std::numbers::pi / 180;  // beyond this it is no calibration
+  if (!(c.sd > 0) || c.sd > kLargest) e.fail_attr("sd", "expected an angle in (0, 10deg]");
+  if (e.has("joints")) {
+    std::string list = e.text("joints");
+    std::replace(list.begin(), list.end(), ',', ' ');
+    std::istringstream in(list);
+    for (std::string j; in >> j;) {
+      if (std::find(c.joints.begin(), c.joints.end(), j) != c.joints.end())
+        e.fail_attr("joints", "'" + j + "' is listed twice");
+      c.joints.push_back(j);
+    }
+    if (c.joints.empty()) e.fail_attr("joints", "expected joint names (or leave it out: the legs)");
+  }
+  c.file = e.file();
+  c.line = e.line();
+  return c;
 }
 
 void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_) {

@@ -3,6 +3,7 @@
 // before any world exists, so a bad file never half-loads.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,8 +90,9 @@ struct RobotPlacement {
   bool fixed_base = false;  // weld the root link to the world (test rigs, swing-leg studies)
   double stiffness = 1.0;   // servo stiffness held until a controller commands otherwise
   double period = 0;        // s; control period overriding the device file's (0: keep it)
-  std::vector<MotorOverride> motors;  // <motor> changes to the device file, in order
-  std::vector<ServoOverride> servos;  // <servo> calibration errors, in order
+  std::vector<MotorOverride> motors;             // <motor> changes to the device file, in order
+  std::vector<ServoOverride> servos;             // <servo> calibration errors, in order
+  std::optional<CalibrationSpread> calibration;  // <calibration>: seeded zero errors
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;

@@ -323,9 +323,15 @@ class Parser {
       } else if (n == "servo") {
         if (r.devices.empty()) child.fail("<servo> changes the device file, and there is none");
         r.servos.push_back(servo_override(child));
+      } else if (n == "calibration") {
+        if (r.devices.empty())
+          child.fail("<calibration> changes the device file, and there is none");
+        if (r.calibration) child.fail("one <calibration> per robot");
+        r.calibration = calibration_spread(child);
       } else {
         child.fail(
-            "unknown element in <robot> (expected joints, sensors, controller, motor or servo)");
+            "unknown element in <robot> (expected joints, sensors, controller, motor, servo or "
+            "calibration)");
       }
     }
     out_.robots.push_back(std::move(r));

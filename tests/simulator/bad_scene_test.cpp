@@ -145,6 +145,22 @@ TEST(BadScene, MotorOverrides) {
   expect_error(
       "<scene>\n<robot " + kNao + ">\n" + R"(<motor name="pitch" gain="5"/></robot></scene>)",
       "bad.xml:3", "there is none");
+  expect_error(robot + R"(<calibration sd="0"/></robot></scene>)", "bad.xml:3",
+               "attribute 'sd': expected an angle in (0, 10deg]");
+  expect_error(robot + R"(<calibration sd="20deg"/></robot></scene>)", "bad.xml:3",
+               "expected an angle in (0, 10deg]");
+  expect_error(robot + R"(<calibration/></robot></scene>)", "bad.xml:3", "sd");
+  expect_error(robot + R"(<calibration sd="1deg" joints=" , "/></robot></scene>)", "bad.xml:3",
+               "expected joint names");
+  expect_error(robot + R"(<calibration sd="1deg" joints="LHipPitch,LHipPitch"/></robot></scene>)",
+               "bad.xml:3", "'LHipPitch' is listed twice");
+  expect_error(robot + R"(<calibration sd="1deg" joints="LElbow"/></robot></scene>)", "bad.xml:3",
+               "no servo for 'LElbow'");
+  expect_error(
+      robot + R"(<calibration sd="1deg"/>)" + "\n" + R"(<calibration sd="1deg"/></robot></scene>)",
+      "bad.xml:4", "one <calibration> per robot");
+  expect_error("<scene>\n<robot " + kNao + ">\n" + R"(<calibration sd="1deg"/></robot></scene>)",
+               "bad.xml:3", "there is none");
   expect_error(robot + R"(<servo joint="LElbow" offset="1deg"/></robot></scene>)", "bad.xml:3",
                "no servo for that joint");
   expect_error(robot + R"(<servo joint="LHipPitch" offset="3 bananas"/></robot></scene>)",
