@@ -54,6 +54,19 @@ std::string ArgumentReader::text_or(const std::string& flag, const std::string& 
   return has(flag) ? text(flag) : fallback;
 }
 
+std::vector<std::string> ArgumentReader::texts(const std::string& flag) {
+  std::vector<std::string> values;
+  for (size_t i = 0; i < args_.size(); ++i) {
+    if (args_[i] != flag || used_.count(static_cast<int>(i))) continue;
+    if (i + 1 >= args_.size())
+      throw Error("stride " + command_ + ": " + flag + ": expected a value after it");
+    used_.insert(static_cast<int>(i));
+    used_.insert(static_cast<int>(i + 1));
+    values.push_back(args_[++i]);
+  }
+  return values;
+}
+
 double ArgumentReader::number(const std::string& flag) {
   const std::string t = text(flag);
   double v = 0;

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "console/cli/subcommand.hpp"
 
@@ -17,6 +18,7 @@ class ArgumentReader {
   bool flag(const std::string& flag);  // a flag without value
   std::string text(const std::string& flag);
   std::string text_or(const std::string& flag, const std::string& fallback);
+  std::vector<std::string> texts(const std::string& flag);  // every `flag value`, in order
   double number(const std::string& flag);
   double number_or(const std::string& flag, double fallback);
   std::uint64_t unsigned_integer(const std::string& flag);

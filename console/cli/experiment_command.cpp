@@ -1,4 +1,5 @@
-// `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--no-plots]`: the
+// `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--no-plots]
+// [--set Module.field=value ...]`: the
 // thesis' Chapter 4 experiments run in the simulator (posture, knee-energy, kalman, fastest,
 // arm-swing, gains); --jobs walks at once (default: hardware threads), the results do not depend
 // on it.
@@ -7,6 +8,7 @@
 #include "console/cli/arguments.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/experiment_list.hpp"
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/walk_pool.hpp"
 #include "robot/core/error.hpp"
 
@@ -33,6 +35,8 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     }
     o.out_dir = a.text_or("--out", "");
     o.scenes_dir = a.text_or("--scenes", o.scenes_dir);
+    for (const std::string& set : a.texts("--set"))
+      o.parameters.push_back(experiments::parse_parameter_override(set));
     a.finish();
     return experiments::run_experiment(name, o, out);
   } catch (const Error& e) {

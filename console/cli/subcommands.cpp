@@ -50,9 +50,9 @@ const std::vector<Subcommand>& subcommands() {
        pattern_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains [--seeds N] [--jobs N] "
-       "[--out dir] "
-       "[--scenes dir] [--no-plots]: Ch. 4 experiments (--jobs: walks at once, default all "
-       "hardware threads)",
+       "[--out dir] [--scenes dir] [--no-plots] [--set Module.field=value ...]: Ch. 4 "
+       "experiments (--jobs: walks at once, default all hardware threads; --set: a module "
+       "parameter in every walk)",
        experiment_main},
   };
   return table;

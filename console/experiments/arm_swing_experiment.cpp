@@ -5,6 +5,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/walk_pool.hpp"
 #include "console/experiments/walk_recording.hpp"
 
@@ -27,7 +28,7 @@ WalkSetup arm_swing_walk(const ExperimentOptions& o, double target_speed, bool s
   setup.parameters = {{"PatternWalk", p.str()},
                       {"ArmSwing", swing ? "gain_scale=1" : "gain_scale=0"}};
   setup.settle_seconds = 0.05;
-  return setup;
+  return with_overrides(o, setup);
 }
 
 int run_arm_swing_experiment(const ExperimentOptions& o, std::ostream& out) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "console/plot/gnuplot_plot.hpp"
@@ -16,6 +17,8 @@ struct ExperimentOptions {
   int seeds = 0;        // 0: the experiment's own default
   bool plots = true;    // PNGs next to the CSVs (needs gnuplot)
   int jobs = 1;         // walks run at once (worker processes); results do not depend on it
+  // --set Module.field=value, in order: {module, "field=value"} applied to every walk.
+  std::vector<std::pair<std::string, std::string>> parameters;
 };
 
 // scenes_dir/<name>.xml; throws stride::Error naming the path when it does not exist.

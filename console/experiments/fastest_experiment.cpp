@@ -3,6 +3,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/walk_pool.hpp"
 #include "console/experiments/walk_recording.hpp"
 #include "robot/core/error.hpp"
@@ -63,7 +64,7 @@ int run_fastest_experiment(const ExperimentOptions& o, std::ostream& out) {
           setup.parameters = {{"PatternWalk", fast_walk_parameters(s, v)},
                               {s.strategy, gains.str()},
                               {"ArmSwing", "gain_scale=" + std::to_string(s.arm_swing)}};
-          setups.push_back(setup);
+          setups.push_back(with_overrides(o, setup));
         }
         try {
           record_walks(setups, o.jobs, [&](std::size_t k, WalkRecording&& r) {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/torso_sway.hpp"
 #include "console/experiments/walk_pool.hpp"
 #include "robot/core/error.hpp"
@@ -76,7 +77,7 @@ WalkSetup gains_walk(const ExperimentOptions& o, const std::string& strategy, do
   std::ostringstream p;
   p << "kp_pitch=" << kp << " kd_pitch=" << kd << " kp_roll=" << kp << " kd_roll=" << kd;
   setup.parameters = {{st->module, p.str()}};
-  return setup;
+  return with_overrides(o, setup);
 }
 
 int run_gains_experiment(const ExperimentOptions& o, std::ostream& out) {

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <vector>
 
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/walk_pool.hpp"
 
 namespace stride::experiments {
@@ -67,10 +68,11 @@ int run_knee_energy_experiment(const ExperimentOptions& o, std::ostream& out) {
   for (const EnergySpeed& sp : kSpeeds)
     for (int conventional = 0; conventional < 2; ++conventional)
       for (int seed = 1; seed <= seeds; ++seed)
-        setups.push_back({scene_path(o, std::string(conventional ? "energy_conventional_"
-                                                                 : "energy_stretched_") +
-                                            std::to_string(sp.cm)),
-                          static_cast<std::uint64_t>(seed)});
+        setups.push_back(with_overrides(
+            o, {scene_path(
+                    o, std::string(conventional ? "energy_conventional_" : "energy_stretched_") +
+                           std::to_string(sp.cm)),
+                static_cast<std::uint64_t>(seed)}));
   std::vector<std::array<Repeats, 2>> repeats(std::size(kSpeeds));  // stretched, conventional
   record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
     const std::size_t speed = i / (2 * seeds);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <ostream>
 
+#include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/posture_tally.hpp"
 #include "console/experiments/walk_pool.hpp"
 
@@ -102,7 +103,8 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
   std::vector<WalkSetup> setups;
   for (const PostureCase& c : posture_cases())
     for (int seed = 1; seed <= seeds; ++seed)
-      setups.push_back({scene_path(o, c.scene), static_cast<std::uint64_t>(seed)});
+      setups.push_back(
+          with_overrides(o, {scene_path(o, c.scene), static_cast<std::uint64_t>(seed)}));
   record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
     const std::size_t k = i / seeds;
     const int seed = static_cast<int>(i % seeds) + 1;

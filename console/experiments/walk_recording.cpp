@@ -183,7 +183,13 @@ WalkRecording record_walk(const WalkSetup& setup) {
   if (!rt) throw Error("experiment scene '" + setup.scene + "': robot 0 has no <controller>");
   for (const auto& [representation, module] : setup.providers)
     rt->swap_provider(representation, module);
-  for (const auto& [module, text] : setup.parameters) rt->set_parameters(module, text);
+  for (const auto& [module, text] : setup.parameters) {
+    try {
+      rt->set_parameters(module, text);
+    } catch (const Error& e) {
+      throw Error(setup.scene + ": parameters " + module + " '" + text + "': " + e.what());
+    }
+  }
 
   WalkRecording r;
   r.walk_module = rt->provider_of("WalkingJointRequest");

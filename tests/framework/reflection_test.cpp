@@ -12,6 +12,7 @@
 #include "robot/representations/joint_request.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
 #include "robot/runtime/nao_io_modules.hpp"
+#include "tests/error_text.hpp"
 
 namespace stride {
 
@@ -196,14 +197,7 @@ TEST(Text, PartialUpdateChangesOnlyTheNamedFields) {
   EXPECT_EQ(e.grid[1][1], 6);
 }
 
-std::string error_of(auto&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using stride::test_support::error_of;
 
 TEST(Text, ErrorsNameTheFieldAndWhatWasExpected) {
   JointRequest r;

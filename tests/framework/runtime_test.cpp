@@ -4,6 +4,7 @@
 #include "robot/nao/joint_limits.hpp"
 
 #include "robot/runtime/runtime.hpp"
+#include "tests/error_text.hpp"
 #include "tests/framework/fake_link.hpp"
 
 namespace stride {
@@ -11,14 +12,7 @@ namespace {
 
 using test::FakeLink;
 
-std::string error_of(auto&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using stride::test_support::error_of;
 
 TEST(Runtime, OneStepRunsSensorsModulesAndActuators) {
   const auto registry = test::test_registry();

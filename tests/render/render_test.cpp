@@ -19,6 +19,7 @@
 #include "simulator/render/views.hpp"
 #include "simulator/render/world_renderer.hpp"
 #include "simulator/world/physics_world.hpp"
+#include "tests/error_text.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride::render {
@@ -32,14 +33,7 @@ fs::path temp(const std::string& name) {
   return dir / name;
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using stride::test_support::error_of;
 
 TEST(Camera, TargetProjectsToTheImageCentreAndTheFovToTheEdges) {
   CameraView c;
