@@ -1,9 +1,10 @@
 // `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--no-plots]
-// [--set Module.field=value ...]`: the
+// [--set Module.field=value ...] [--cases a,b]`: the
 // thesis' Chapter 4 experiments run in the simulator (posture, knee-energy, kalman, fastest,
 // arm-swing, gains); --jobs walks at once (default: hardware threads), the results do not depend
 // on it.
 #include <ostream>
+#include <sstream>
 
 #include "console/cli/arguments.hpp"
 #include "console/cli/subcommand.hpp"
@@ -37,6 +38,15 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.scenes_dir = a.text_or("--scenes", o.scenes_dir);
     for (const std::string& set : a.texts("--set"))
       o.parameters.push_back(experiments::parse_parameter_override(set));
+    if (a.has("--cases")) {
+      if (name != "posture")
+        throw Error("stride experiment " + name + ": --cases: only posture takes it");
+      std::stringstream list(a.text_or("--cases", ""));
+      for (std::string item; std::getline(list, item, ',');)
+        if (!item.empty()) o.cases.push_back(item);
+      if (o.cases.empty())
+        throw Error("stride experiment posture: --cases: expected a,b,... of case names");
+    }
     a.finish();
     return experiments::run_experiment(name, o, out);
   } catch (const Error& e) {

@@ -50,9 +50,9 @@ const std::vector<Subcommand>& subcommands() {
        pattern_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains [--seeds N] [--jobs N] "
-       "[--out dir] [--scenes dir] [--no-plots] [--set Module.field=value ...]: Ch. 4 "
-       "experiments (--jobs: walks at once, default all hardware threads; --set: a module "
-       "parameter in every walk)",
+       "[--out dir] [--scenes dir] [--no-plots] [--set Module.field=value ...] [--cases a,b]: "
+       "Ch. 4 experiments (--jobs: walks at once, default all hardware threads; --set: a module "
+       "parameter in every walk; --cases: posture cases to run, e.g. hip or none_fast)",
        experiment_main},
   };
   return table;

@@ -19,6 +19,9 @@ struct ExperimentOptions {
   int jobs = 1;         // walks run at once (worker processes); results do not depend on it
   // --set Module.field=value, in order: {module, "field=value"} applied to every walk.
   std::vector<std::pair<std::string, std::string>> parameters;
+  // --cases a,b: the posture cases to run, each a scene name or a strategy (none|hip|ankle);
+  // empty: all nine.
+  std::vector<std::string> cases;
 };
 
 // scenes_dir/<name>.xml; throws stride::Error naming the path when it does not exist.

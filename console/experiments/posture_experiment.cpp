@@ -1,5 +1,6 @@
 #include "console/experiments/posture_experiment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -7,6 +8,7 @@
 #include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/posture_tally.hpp"
 #include "console/experiments/walk_pool.hpp"
+#include "robot/core/error.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -42,6 +44,23 @@ const std::vector<PostureCase>& posture_cases() {
       {"ankle_fast", "Fig. 4.12", 3.5035, 0.2336, 0.0574},
   };
   return cases;
+}
+
+std::vector<std::size_t> selected_posture_cases(const std::vector<std::string>& selection) {
+  const auto& cases = posture_cases();
+  const auto names = [](const PostureCase& c, const std::string& s) {
+    return c.scene == s || c.scene.rfind(s + "_", 0) == 0;  // the scene, or its strategy
+  };
+  for (const std::string& s : selection)
+    if (std::none_of(cases.begin(), cases.end(), [&](const PostureCase& c) { return names(c, s); }))
+      throw Error("stride experiment posture: --cases: unknown case '" + s +
+                  "' (expected none, hip, ankle or <strategy>_<slow|medium|fast>)");
+  std::vector<std::size_t> picked;
+  for (std::size_t k = 0; k < cases.size(); ++k)
+    if (selection.empty() || std::any_of(selection.begin(), selection.end(),
+                                         [&](const std::string& s) { return names(cases[k], s); }))
+      picked.push_back(k);
+  return picked;
 }
 
 void write_walk_figures(const ExperimentOptions& o, const WalkRecording& r, const std::string& stem,
@@ -99,14 +118,15 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
        "roll_max",  "fell",        "foot_slip", "foot_slip_net_x", "foot_tilted_time",
        "foot_spin", "yaw_min",     "yaw_max",   "tipped",          "tipped_at"}};
   std::vector<std::vector<std::string>> rows;
+  const std::vector<std::size_t> picked = selected_posture_cases(o.cases);
   std::vector<PostureTally> tallies(posture_cases().size());
   std::vector<WalkSetup> setups;
-  for (const PostureCase& c : posture_cases())
+  for (std::size_t k : picked)
     for (int seed = 1; seed <= seeds; ++seed)
-      setups.push_back(
-          with_overrides(o, {scene_path(o, c.scene), static_cast<std::uint64_t>(seed)}));
+      setups.push_back(with_overrides(
+          o, {scene_path(o, posture_cases()[k].scene), static_cast<std::uint64_t>(seed)}));
   record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
-    const std::size_t k = i / seeds;
+    const std::size_t k = picked[i / seeds];  // the summary's case column keeps table indices
     const int seed = static_cast<int>(i % seeds) + 1;
     const PostureCase& c = posture_cases()[k];
     const WalkSummary s = summarize(r);
@@ -157,7 +177,7 @@ int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
                "roll[rad]", "fell", "past 0.4 rad [s]", "thesis", "dist[m]", "v[m/s]", "step[m]"},
               rows);
   std::vector<std::vector<std::string>> tally_rows;
-  for (std::size_t k = 0; k < tallies.size(); ++k)
+  for (std::size_t k : picked)
     tally_rows.push_back(
         tally_row(posture_cases()[k].scene, tallies[k], posture_cases()[k].thesis_distance));
   out << "\nPer case: lost = fell or torso past " << sim::kTipAngle

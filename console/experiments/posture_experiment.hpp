@@ -20,6 +20,11 @@ struct PostureCase {
 };
 const std::vector<PostureCase>& posture_cases();
 
+// Indices into posture_cases() that `selection` names (a scene, or a strategy prefix such as
+// "hip"), in table order; all of them when it is empty. Throws stride::Error on a name that
+// matches no case.
+std::vector<std::size_t> selected_posture_cases(const std::vector<std::string>& selection);
+
 // The four panels of Figs. 4.6-4.12 for one recorded walk, written as <stem>_*.csv/.png.
 void write_walk_figures(const ExperimentOptions& o, const WalkRecording& r, const std::string& stem,
                         const std::string& title, bool ankle_joints);

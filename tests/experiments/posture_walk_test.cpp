@@ -1,6 +1,7 @@
 // The medium-speed walk of Sec. 4.3.4.2 on the floor with local unevenness stays up for the whole
 // 15 s with either posture strategy (Figs. 4.7 and 4.11), takes the thesis' 61 steps, and moves
 // forward; the experiment command rejects bad arguments with one line.
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -8,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "console/cli/subcommand.hpp"
+#include "console/experiments/posture_experiment.hpp"
 #include "console/experiments/walk_recording.hpp"
+#include "robot/core/error.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -60,6 +63,29 @@ TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   EXPECT_EQ(run({"posture", "--scenes", "/nonexistent"}, err), 1);
   EXPECT_NE(err.find("not found"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
+}
+
+TEST(PostureCases, SelectionNamesScenesOrStrategiesInTableOrder) {
+  EXPECT_EQ(selected_posture_cases({}).size(), 9u);
+  EXPECT_EQ(selected_posture_cases({"hip"}), (std::vector<std::size_t>{3, 4, 5}));
+  EXPECT_EQ(selected_posture_cases({"ankle", "none_fast"}), (std::vector<std::size_t>{2, 6, 7, 8}));
+  EXPECT_EQ(selected_posture_cases({"hip_medium", "hip"}), (std::vector<std::size_t>{3, 4, 5}));
+  EXPECT_THROW(selected_posture_cases({"hi"}), Error);  // a prefix must be a whole strategy
+  EXPECT_THROW(selected_posture_cases({"hip_medium", "walk"}), Error);
+}
+
+TEST(ExperimentCommand, CasesIsCheckedBeforeAnyWalk) {
+  std::string err;
+  EXPECT_EQ(run({"posture", "--cases", "hip,sprint"}, err), 1);
+  EXPECT_NE(err.find("--cases: unknown case 'sprint'"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
+  EXPECT_EQ(run({"kalman", "--cases", "hip"}, err), 1);
+  EXPECT_NE(err.find("only posture takes it"), std::string::npos) << err;
+  EXPECT_EQ(run({"posture", "--cases", ","}, err), 1);
+  EXPECT_NE(err.find("--cases: expected"), std::string::npos) << err;
+  // Only the chosen cases' scenes must exist: a directory with none of them names hip_slow.
+  EXPECT_EQ(run({"posture", "--cases", "hip", "--scenes", "/nonexistent"}, err), 1);
+  EXPECT_NE(err.find("hip_slow.xml' not found"), std::string::npos) << err;
 }
 
 }  // namespace
