@@ -1,5 +1,7 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
-// [--video dir] [--view v] [--fps N]`: a headless run, optionally with pictures.
+// [--video dir] [--view v] [--fps N]`: a headless run, optionally with pictures. With
+// `--ensemble N [--heading-spread rad] [--position-spread m] [--jobs N]`: N perturbed starts
+// (seeds N.. on) and the spread of their walks instead.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,7 +10,9 @@
 #include <ostream>
 
 #include "console/cli/arguments.hpp"
+#include "console/cli/ensemble_arguments.hpp"
 #include "console/cli/subcommand.hpp"
+#include "console/ensemble/ensemble_report.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
 #include "simulator/render/snapshot.hpp"
@@ -16,6 +20,24 @@
 #include "simulator/run_report.hpp"
 
 namespace stride::cli {
+namespace {
+
+int run_ensemble(ArgumentReader& a, const std::string& scene, double seconds, std::ostream& out) {
+  const std::uint64_t n = a.unsigned_integer("--ensemble");
+  if (n < 1 || n > 1000) throw Error("stride run: --ensemble: expected 1..1000 starts");
+  for (const char* single : {"--report", "--log", "--snapshot", "--video", "--view", "--fps"})
+    if (a.has(single))
+      throw Error(std::string("stride run: ") + single + ": not with --ensemble (one run only)");
+  ensemble::EnsembleRequest r{
+      scene, {}, read_ensemble_spec(a, "run", static_cast<int>(n)), seconds};
+  const int jobs = read_jobs(a, "run");
+  a.finish();
+  const auto members = ensemble::run_ensembles({r}, jobs).front();
+  ensemble::print_ensemble(r, members, out);
+  return 0;
+}
+
+}  // namespace
 
 int run_main(Args args, std::ostream& out, std::ostream& err) {
   try {
@@ -23,6 +45,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string scene = a.positional("scene");
     const double seconds = a.number_or("--seconds", 10.0);
     if (!(seconds >= 0)) throw Error("stride run: --seconds: expected a time >= 0");
+    if (a.has("--ensemble")) return run_ensemble(a, scene, seconds, out);
     const std::optional<std::uint64_t> seed =
         a.has("--seed") ? std::optional<std::uint64_t>(a.unsigned_integer("--seed")) : std::nullopt;
     const std::string report = a.text_or("--report", "");
@@ -57,6 +80,9 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     sim::RunTiming timing;
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out << sim::run_report_text(sim, timing);
+    if (sim.robot_count() > 0 && sim.walk_metrics(0).result().steps > 0)
+      out << "  one draw (seed " << sim.scene().physics.seed
+          << "): `--ensemble N` gives the spread and fall count over perturbed starts\n";
     if (!report.empty()) {
       std::ofstream f(report);
       if (!f) throw Error("stride run: --report: cannot write '" + report + "'");

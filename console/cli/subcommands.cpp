@@ -14,6 +14,7 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err);
 int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 int swing_leg_main(Args args, std::ostream& out, std::ostream& err);
 int landing_main(Args args, std::ostream& out, std::ostream& err);
+int converge_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -27,8 +28,16 @@ const std::vector<Subcommand>& subcommands() {
        push_sweep_main},
       {"run",
        "run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png] "
-       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N]: headless simulation",
+       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] | run <scene> --ensemble N "
+       "[--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] [--jobs N]: headless "
+       "simulation; --ensemble: N perturbed starts, the walk's spread and fall count",
        run_main},
+      {"converge",
+       "converge <scene> [--settings \"iterations=20 solver=exact ...\"] [--reference S] "
+       "[--starts N] [--seconds S] [--tolerance r] [--lost-tolerance n] [--jobs N] [--out dir] "
+       "[--no-plots]: walk outcomes over solver settings, each over perturbed starts; the "
+       "cheapest setting agreeing with the reference",
+       converge_main},
       {"kin", "kin fk|ik|com --chain C --q \"...\" | --pose \"x y z r p y\": NAO kinematics",
        kin_main},
       {"swing-leg",

@@ -1,12 +1,12 @@
 #pragma once
-// Many experiment walks at once. ODE keeps process-wide state (its random generator drives the
-// solver's row order), so walks run in forked worker processes, not threads; results come back
-// in setup order and equal those of running the walks one by one.
+// Many experiment walks at once in worker processes (worker_pool.hpp); results come back in
+// setup order and equal those of running the walks one by one.
 #include <cstddef>
 #include <functional>
 #include <vector>
 
 #include "console/experiments/walk_recording.hpp"
+#include "console/experiments/worker_pool.hpp"
 
 namespace stride::experiments {
 
@@ -15,8 +15,5 @@ namespace stride::experiments {
 // A walk's stride::Error is rethrown when its turn comes, after the earlier walks were used.
 void record_walks(const std::vector<WalkSetup>& setups, int jobs,
                   const std::function<bool(std::size_t, WalkRecording&&)>& use);
-
-// The default for --jobs: the machine's hardware threads (at least 1).
-int default_jobs();
 
 }  // namespace stride::experiments

@@ -23,7 +23,16 @@ using tinyxml2::XMLElement;
 
 class Parser {
  public:
-  explicit Parser(SceneDescription& out) : out_(out) {}
+  explicit Parser(SceneDescription& out, PhysicsAttributes physics_over = {})
+      : out_(out), physics_over_(std::move(physics_over)) {}
+
+  // A scene without <physics> still takes the attributes set over it, on the defaults.
+  void physics_over_defaults() {
+    if (physics_seen_ || physics_over_.empty()) return;
+    XMLDocument doc;
+    doc.Parse("<physics/>");
+    physics(XmlElement(doc.RootElement(), out_.file));
+  }
 
   void parse_file(const std::string& path, const XmlElement* included_from) {
     std::ifstream in(path);
@@ -102,6 +111,8 @@ class Parser {
   }
 
   void physics(const XmlElement& e) {
+    physics_seen_ = true;
+    set_physics_over(e);
     e.allow_only({"step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp", "contact_cfm",
                   "contact_stiffness", "contact_damping", "contact_spring_per", "max_contacts",
                   "gravity", "seed"});
@@ -126,6 +137,20 @@ class Parser {
     p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
     p.gravity = e.vector3_or("gravity", p.gravity);
     p.seed = e.seed_or("seed", p.seed);
+  }
+
+  // Writes the attributes set over the scene into its element, dropping the ones they replace.
+  void set_physics_over(const XmlElement& e) const {
+    auto* raw = const_cast<XMLElement*>(e.raw());  // the parser owns the document
+    for (const auto& [name, value] : physics_over_) {
+      const bool spring = name == "contact_stiffness" || name == "contact_damping";
+      const bool soft = name == "contact_erp" || name == "contact_cfm";
+      for (const char* other : {"contact_stiffness", "contact_damping"})
+        if (soft) raw->DeleteAttribute(other);
+      for (const char* other : {"contact_erp", "contact_cfm"})
+        if (spring) raw->DeleteAttribute(other);
+      raw->SetAttribute(name.c_str(), value.c_str());
+    }
   }
 
   // contact_stiffness [N/m] and contact_damping [N s/m] per contact point: the same soft contact
@@ -409,6 +434,8 @@ class Parser {
   std::set<std::string> open_files_;
   std::vector<std::unique_ptr<XMLDocument>> docs_;
   std::vector<std::unique_ptr<std::string>> paths_;
+  PhysicsAttributes physics_over_;
+  bool physics_seen_ = false;
 };
 
 // Checks that need the whole scene: pushes name robots that exist.
@@ -425,12 +452,41 @@ void check_references(const SceneDescription& s) {
 }  // namespace
 
 SceneDescription parse_scene_file(const std::string& path) {
+  return parse_scene_file(path, {});
+}
+
+SceneDescription parse_scene_file(const std::string& path, const PhysicsAttributes& physics_over) {
   SceneDescription s;
   s.file = path;
-  Parser p(s);
+  Parser p(s, physics_over);
   p.parse_file(path, nullptr);
+  p.physics_over_defaults();
   check_references(s);
   return s;
+}
+
+PhysicsAttributes parse_physics_setting(const std::string& text) {
+  for (char c : text)  // the error below repeats the text: it must stay one printable line
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      throw Error("physics setting: expected printable attribute=value[,attribute=value...] text");
+  const std::string where = "physics setting '" + text + "'";
+  PhysicsAttributes attrs;
+  std::stringstream list(text);
+  std::string xml = "<scene><physics";
+  for (std::string item; std::getline(list, item, ',');) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+      throw Error(where + ": expected attribute=value[,attribute=value...], got '" + item + "'");
+    const std::string name = item.substr(0, eq), value = item.substr(eq + 1);
+    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyz_") != std::string::npos ||
+        value.find_first_of("\"<>&") != std::string::npos)
+      throw Error(where + ": '" + item + "' is not a <physics> attribute and value");
+    attrs.emplace_back(name, value);
+    xml += " " + name + "=\"" + value + "\"";
+  }
+  if (attrs.empty()) throw Error(where + ": expected attribute=value[,attribute=value...]");
+  parse_scene_text(xml + "/></scene>", where);  // each value checked as the scene's would be
+  return attrs;
 }
 
 SceneDescription parse_scene_text(const std::string& text, const std::string& virtual_path) {

@@ -1,5 +1,6 @@
 #pragma once
-// One fuzz input: the first byte picks the parser (scene XML or URDF), the rest is the text.
+// One fuzz input: the first byte picks the parser (bit 0: URDF, else bit 1: a `stride converge`
+// physics setting, else scene XML), the rest is the text.
 // Any outcome but a stride::Error or success is a bug (the caller sees other exceptions).
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +19,8 @@ inline std::string parse_fuzz_input(const std::uint8_t* data, std::size_t size) 
   try {
     if (data[0] & 1)
       model::parse_urdf(text, "fuzz.urdf");
+    else if (data[0] & 2)
+      sim::parse_physics_setting(text);
     else
       sim::parse_scene_text(text, "/nonexistent/fuzz.xml");  // includes resolve to nothing
   } catch (const Error& e) {
