@@ -1,13 +1,18 @@
 # Every package here is a Debian package installed by .ci/setup; see third_party_notes.md.
+# What the robot side (robot/, behaviours/, stride-robot) needs:
 find_package(PkgConfig REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(tinyxml2 REQUIRED)
 find_package(Threads REQUIRED)
-pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 pkg_check_modules(URDFDOM REQUIRED IMPORTED_TARGET urdfdom)
+find_package(msgpack REQUIRED CONFIG)  # Debian's msgpack-cxx: target msgpackc-cxx
+if(STRIDE_ROBOT_ONLY)
+  return()
+endif()
+# The simulator, console, tests and benchmarks:
+pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 find_package(PNG REQUIRED)
-find_package(msgpack REQUIRED CONFIG)  # Debian's msgpack-cxx: target msgpackc-cxx
 find_library(READLINE_LIBRARY readline REQUIRED)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)

@@ -68,6 +68,23 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
     j.end_object();
   }
   j.end_array();
+  if (const LolaServeReport* l = timing.lola) {
+    j.key("lola").begin_object();
+    j.field("socket", l->socket).field("robot", l->robot);
+    j.field("pacing", std::string(l->pacing == LolaPacing::Realtime ? "realtime" : "lockstep"));
+    j.field("period", l->period).field("frames", static_cast<long long>(l->frames));
+    j.field("exchanged", static_cast<long long>(l->exchanged));
+    j.field("missed", static_cast<long long>(l->missed));
+    j.field("bad_packets", static_cast<long long>(l->bad_packets));
+    j.field("late_answers", static_cast<long long>(l->late_answers));
+    j.field("late_frames", static_cast<long long>(l->late_frames));
+    j.field("without_client", static_cast<long long>(l->without_client));
+    j.field("clients", l->clients).field("clients_lost", l->clients_lost);
+    j.key("events").begin_array();
+    for (const auto& e : l->events) j.value(e);
+    j.end_array();
+    j.end_object();
+  }
   j.end_object();
   return j.str() + "\n";
 }
@@ -100,6 +117,7 @@ std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
       o << "\n";
     }
   }
+  if (timing.lola) o << "  " << lola_report_text(*timing.lola) << "\n";
   return o.str();
 }
 

@@ -2,12 +2,14 @@
 // The summary of a headless run: timing, the state hash, and each robot's torso and fall state.
 #include <string>
 
+#include "simulator/lola/lola_server.hpp"
 #include "simulator/simulation.hpp"
 
 namespace stride::sim {
 
 struct RunTiming {
-  double wall_time = 0;  // s
+  double wall_time = 0;                 // s
+  const LolaServeReport* lola = nullptr;  // a robot served over LoLA: its frames, missed, lost
 };
 
 std::string run_report_json(const Simulation& sim, const RunTiming& timing);

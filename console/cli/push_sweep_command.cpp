@@ -134,7 +134,6 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
     throw Error("stride push-sweep: " + o.scene + ": robot 0 needs a <controller>");
   auto& controller = scene.robots[0].controller;
   controller.providers["JointRequest"] = module_of(o.strategy);
-  controller.parameters["ComStateEstimator.urdf"] = scene.robots[0].urdf;
   for (const auto& [key, value] : o.parameters) controller.parameters[key] = value;
   const std::string robot = scene.robots[0].name;
   console::SimSession session(std::move(scene));

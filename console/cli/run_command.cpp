@@ -1,7 +1,8 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
-// [--video dir] [--view v] [--fps N]`: a headless run, optionally with pictures. With
-// `--ensemble N [--heading-spread rad] [--position-spread m] [--jobs N]`: N perturbed starts
-// (seeds N.. on) and the spread of their walks instead.
+// [--video dir] [--view v] [--fps N] [--lola <socket> ...]`: a headless run, optionally with
+// pictures, optionally with a robot on LoLA (lola_run.hpp). With `--ensemble N
+// [--heading-spread rad] [--position-spread m] [--jobs N]`: N perturbed starts (seeds N.. on)
+// and the spread of their walks instead.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include "console/cli/arguments.hpp"
 #include "console/cli/ensemble_arguments.hpp"
+#include "console/cli/lola_run.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/ensemble/ensemble_report.hpp"
 #include "console/session/sim_session.hpp"
@@ -18,6 +20,7 @@
 #include "simulator/render/snapshot.hpp"
 #include "simulator/render/views.hpp"
 #include "simulator/run_report.hpp"
+#include "simulator/scene/scene_parser.hpp"
 
 namespace stride::cli {
 namespace {
@@ -56,9 +59,12 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string view = a.text_or("--view", "");
     const double fps = a.number_or("--fps", 25.0);
     if (!(fps >= 1 && fps <= 1000)) throw Error("stride run: --fps: expected 1 to 1000 frames/s");
+    const LolaRunOptions lola = read_lola_options(a);
     a.finish();
 
-    console::SimSession session(scene, seed);
+    sim::SceneDescription description = sim::parse_scene_file(scene);
+    if (seed) description.physics.seed = *seed;
+    console::SimSession session(lola_scene(std::move(description), lola));
     auto& sim = session.simulation();
     if (!log.empty()) {
       if (!session.runtime(0)) throw Error("stride run: --log: robot 0 has no <controller>");
@@ -72,6 +78,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
           std::max<std::uint64_t>(1, std::llround(1.0 / (fps * sim.scene().physics.step))));
     else if (!snapshot.empty())
       render::resolve_view(sim, view);  // a bad view fails before the run, not after it
+    const auto server = attach_lola(session, lola, err);
     const auto t0 = std::chrono::steady_clock::now();
     if (recorder.active())
       sim.run_for(seconds, [&] { recorder.after_step(renderer, sim); });
@@ -79,6 +86,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       sim.run_for(seconds);
     sim::RunTiming timing;
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (server) timing.lola = &server->report();
     out << sim::run_report_text(sim, timing);
     if (sim.robot_count() > 0 && sim.walk_metrics(0).result().steps > 0)
       out << "  one draw (seed " << sim.scene().physics.seed

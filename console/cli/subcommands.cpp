@@ -2,6 +2,8 @@
 
 #include <ostream>
 
+#include "robot/app/robot_main.hpp"
+
 namespace stride::cli {
 
 // Each subcommand lives in its own file; declare it here and add one line to the table.
@@ -15,6 +17,8 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err);
 int swing_leg_main(Args args, std::ostream& out, std::ostream& err);
 int landing_main(Args args, std::ostream& out, std::ostream& err);
 int converge_main(Args args, std::ostream& out, std::ostream& err);
+int robot_main(Args args, std::ostream& out, std::ostream& err);
+int lola_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -28,10 +32,14 @@ const std::vector<Subcommand>& subcommands() {
        push_sweep_main},
       {"run",
        "run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png] "
-       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] | run <scene> --ensemble N "
-       "[--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] [--jobs N]: headless "
-       "simulation; --ensemble: N perturbed starts, the walk's spread and fall count",
+       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] [--lola <socket> "
+       "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] | run <scene> "
+       "--ensemble N [--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] "
+       "[--jobs N]: headless simulation (--lola: that robot is served over a LoLA socket); "
+       "--ensemble: N perturbed starts, the walk's spread and fall count",
        run_main},
+      {"robot", kRobotUsage, robot_main},
+      {"lola", kLolaUsage, lola_main},
       {"converge",
        "converge <scene> [--settings \"iterations=20 solver=exact ...\"] [--reference S] "
        "[--starts N] [--seconds S] [--tolerance r] [--lost-tolerance n] [--jobs N] [--out dir] "

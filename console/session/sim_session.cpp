@@ -2,20 +2,13 @@
 
 #include "behaviours/module_catalogue.hpp"
 #include "robot/core/error.hpp"
+#include "robot/runtime/controller_schedule.hpp"
+#include "simulator/lola/lola_codec_link.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::console {
 
 namespace {
-void apply_change(Runtime& rt, const sim::ControllerChange& c) {
-  if (c.kind == sim::ControllerChange::Kind::Provider) {
-    rt.swap_provider(c.first, c.second);
-    return;
-  }
-  const auto dot = c.first.find('.');
-  rt.set_parameters(c.first.substr(0, dot), c.first.substr(dot + 1) + "=" + c.second);
-}
-
 sim::SceneDescription load(const std::string& path, std::optional<std::uint64_t> seed) {
   sim::SceneDescription s = sim::parse_scene_file(path);
   if (seed) s.physics.seed = *seed;
@@ -39,44 +32,48 @@ SimSession::~SimSession() {
 
 RuntimeConfig SimSession::runtime_config(int robot) const {
   const auto& c = sim_->scene().robots[robot].controller;
-  return RuntimeConfig{c.providers, c.parameters};
+  return RuntimeConfig{c.providers, c.parameters, models_[robot]};
 }
 
 void SimSession::attach_controllers() {
+  // The controllers' robot models are the simulated robots' own, loaded once from their URDFs.
+  models_.clear();
+  for (int i = 0; i < sim_->robot_count(); ++i)
+    models_.push_back(std::make_shared<const model::RobotModel>(sim_->robot(i).model()));
+  through_packets_.resize(sim_->robot_count());
+  std::vector<std::unique_ptr<hal::HardwareLink>> links(sim_->robot_count());
   std::vector<std::unique_ptr<Runtime>> runtimes(sim_->robot_count());
   for (int i = 0; i < sim_->robot_count(); ++i) {
     const auto& placement = sim_->scene().robots[i];
     if (!placement.has_controller) continue;
+    if (through_packets_[i]) links[i] = std::make_unique<sim::LolaCodecLink>(sim_->robot(i));
+    hal::HardwareLink& link = links[i] ? *links[i] : sim_->robot(i);
     try {
-      runtimes[i] = std::make_unique<Runtime>(registry_, runtime_config(i), sim_->robot(i));
+      runtimes[i] = std::make_unique<Runtime>(registry_, runtime_config(i), link);
     } catch (const Error& e) {
       throw error_at(placement.file, placement.line, "<controller>: " + std::string(e.what()));
     }
-    // Timed changes are tried in order on a scratch controller so a bad one fails at load.
-    if (!placement.controller.changes.empty()) {
-      Runtime scratch(registry_, runtime_config(i), sim_->robot(i));
-      for (const auto& c : placement.controller.changes) {
-        try {
-          apply_change(scratch, c);
-        } catch (const Error& e) {
-          throw error_at(c.file, c.line, "<at>: " + std::string(e.what()));
-        }
-      }
-    }
+    check_changes(registry_, runtime_config(i), link, placement.controller.changes);
   }
+  runtimes_.clear();  // before the links they use
+  packet_links_ = std::move(links);
   runtimes_ = std::move(runtimes);
   for (int i = 0; i < sim_->robot_count(); ++i) {
     Runtime* rt = runtimes_[i].get();
     if (!rt) continue;
-    const auto* changes = &sim_->scene().robots[i].controller.changes;
     sim::Simulation* sim = sim_.get();
-    sim_->set_controller(
-        i, [rt, changes, sim, next = std::size_t{0}](sim::SimulatedRobot&) mutable {
-          while (next < changes->size() && (*changes)[next].time <= sim->time() + 1e-9)
-            apply_change(*rt, (*changes)[next++]);
-          rt->step();
-        });
+    sim_->set_controller(i, [rt, sim, schedule = ControllerSchedule(
+                                          sim_->scene().robots[i].controller.changes)](
+                                sim::SimulatedRobot&) mutable {
+      schedule.apply_due(*rt, sim->time());
+      rt->step();
+    });
   }
+}
+
+void SimSession::route_through_lola_packets(int robot) {
+  through_packets_.at(robot) = true;
+  attach_controllers();
 }
 
 void SimSession::reset() {

@@ -31,11 +31,18 @@ class SimSession {
   // Rebuilds world and controllers from the same description.
   void reset();
 
+  // From now on (also after reset()) robot `i`'s controller talks to it through LoLA's packets
+  // (sim::LolaCodecLink): float32 values, LoLA's units and clock, as over the socket.
+  void route_through_lola_packets(int robot);
+
  private:
   void attach_controllers();
 
   ModuleRegistry registry_;
   std::unique_ptr<sim::Simulation> sim_;
+  std::vector<std::shared_ptr<const model::RobotModel>> models_;
+  std::vector<std::unique_ptr<hal::HardwareLink>> packet_links_;  // per robot, or null
+  std::vector<bool> through_packets_;
   std::vector<std::unique_ptr<Runtime>> runtimes_;
 };
 

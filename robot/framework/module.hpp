@@ -20,6 +20,9 @@
 #include "robot/framework/slot.hpp"
 
 namespace stride {
+namespace model {
+struct RobotModel;
+}
 
 inline constexpr int kMaxDebugRequests = 256;
 using DebugRequestBits = std::bitset<kMaxDebugRequests>;
@@ -60,6 +63,10 @@ class ModuleContext {
   }
   virtual DebugRequest debug_request(std::string_view name) = 0;
   virtual const std::string& module_name() const = 0;
+  // The robot's model (from its URDF), for modules that compute with masses or kinematics: they
+  // copy what they need here, never loading files in update(). Throws naming the module when the
+  // runtime has no model (while the runtime only learns declarations: an empty model).
+  virtual const model::RobotModel& robot_model() = 0;
 
  protected:
   enum class Use { Require, Provide, Parameters };

@@ -61,4 +61,11 @@ inline constexpr int kNumFsr = 8;
 inline constexpr std::array<std::string_view, kNumFsr> kFsrNames = {
     "LFsrFL", "LFsrFR", "LFsrRL", "LFsrRR", "RFsrFL", "RFsrFR", "RFsrRL", "RFsrRR"};
 
+// Touch sensors in LoLA's order.
+inline constexpr int kNumTouch = 14;
+inline constexpr std::array<std::string_view, kNumTouch> kTouchNames = {
+    "ChestButton",    "HeadFront",      "HeadMiddle",   "HeadRear",      "LFootBumperLeft",
+    "LFootBumperRight", "LHandBack",    "LHandLeft",    "LHandRight",    "RFootBumperLeft",
+    "RFootBumperRight", "RHandBack",    "RHandLeft",    "RHandRight"};
+
 }  // namespace stride::hal

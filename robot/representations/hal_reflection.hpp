@@ -23,7 +23,9 @@ struct Reflect<hal::SensorFrame> {
                            field("accelerometer", &S::accelerometer, "m/s^2"),
                            field("gyroscope", &S::gyroscope, "rad/s"),
                            field("angles", &S::angles, "rad"), field("fsr", &S::fsr, "N"),
-                           field("battery", &S::battery));
+                           field("battery", &S::battery), field("sonar", &S::sonar, "m"),
+                           field("status", &S::status), field("touch", &S::touch),
+                           field("robot_config", &S::robot_config));
   }
 };
 

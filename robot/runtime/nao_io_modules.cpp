@@ -1,11 +1,5 @@
 #include "robot/runtime/nao_io_modules.hpp"
 
-#include <cmath>
-
-#include "robot/nao/joint_limits.hpp"
-
-#include <algorithm>
-
 #include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 
@@ -82,17 +76,13 @@ class ActuatorConversion final : public Module {
   explicit ActuatorConversion(ModuleContext& c)
       : request_(c.require<JointRequest>()), out_(c.provide<hal::ActuatorFrame>()) {}
 
+  // Limits, stiffness range and NaN are the Runtime's CommandGuard's (robot/runtime/
+  // command_guard.hpp): it sees every command, whichever module provides the ActuatorFrame.
   void update() override {
     out_.mode = request_.mode;
+    out_.position = request_.position;
+    out_.stiffness = request_.stiffness;
     out_.torque = request_.torque;
-    // Safety: never send a servo past its joint limits or outside stiffness 0..1; a NaN holds 0.
-    for (int i = 0; i < hal::kNumJoints; ++i) {
-      const auto& lim = nao::kJointLimits[i];
-      const double q = request_.position[i];
-      out_.position[i] = std::isfinite(q) ? std::clamp(q, lim.lower, lim.upper) : 0.0;
-      const double s = request_.stiffness[i];
-      out_.stiffness[i] = std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0;
-    }
   }
 
  private:

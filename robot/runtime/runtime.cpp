@@ -7,7 +7,8 @@ namespace stride {
 
 namespace {
 
-const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes"};
+const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes",
+                                        "CommandSafety"};
 
 struct Key {
   bool representation;
@@ -53,6 +54,12 @@ class Runtime::Context final : public ModuleContext {
     return {&rt_.debug_bits_, rt_.debug_request_index(name)};
   }
   const std::string& module_name() const override { return name_; }
+  const model::RobotModel& robot_model() override {
+    if (rt_.config_.model) return *rt_.config_.model;
+    if (!entry_) return rt_.declaring_model_;
+    throw Error("module '" + name_ +
+                "' needs the robot's model (its URDF), and this runtime was given none");
+  }
 
   ModuleDeclaration declaration;               // filled when entry_ is null (declaring only)
   std::vector<std::unique_ptr<Slot>> scratch;  // declaring only
@@ -84,13 +91,18 @@ class Runtime::Context final : public ModuleContext {
 };
 
 Runtime::Runtime(const ModuleRegistry& registry, RuntimeConfig config, hal::HardwareLink& link)
-    : registry_(registry), config_(std::move(config)), link_(link) {
+    : registry_(registry),
+      config_(std::move(config)),
+      link_(link),
+      guard_(lola_joint_limits(config_.model.get())) {
   sensor_ = &slot_value<hal::SensorFrame>(
       blackboard_slot("SensorFrame", typeid(hal::SensorFrame), &make_slot<hal::SensorFrame>));
   frame_info_ = &slot_value<FrameInfo>(
       blackboard_slot("FrameInfo", typeid(FrameInfo), &make_slot<FrameInfo>));
   times_ = &slot_value<ModuleTimes>(
       blackboard_slot("ModuleTimes", typeid(ModuleTimes), &make_slot<ModuleTimes>));
+  safety_ = &slot_value<CommandSafety>(
+      blackboard_slot("CommandSafety", typeid(CommandSafety), &make_slot<CommandSafety>));
 
   for (const auto& name : registry_.names()) {
     Context c(*this, name, nullptr);
@@ -186,17 +198,52 @@ bool Runtime::step() {
   frame_info_->time = sensor_->time;
   frame_info_->frame = frame_counter_++;
   frame_info_->period = link_.period();
+  if (frame_info_->frame == 0) guard_.hold_measured(*sensor_);
+  if (run_modules()) {
+    command_ = *actuator_;
+    guard_.apply(command_, *safety_);
+  } else {
+    command_ = guard_.last_safe();
+    ++safety_->held_frames;
+  }
+  link_.write(command_);
+  if (log_) log_->write_frame();
+  return true;
+}
+
+bool Runtime::run_modules() {
   using Clock = std::chrono::steady_clock;
   auto before = Clock::now();
   for (std::size_t i = 0; i < modules_.size(); ++i) {
-    modules_[i]->module->update();
+    if (config_.on_module_error == ModuleErrorPolicy::Propagate) {
+      modules_[i]->module->update();
+    } else {
+      try {
+        modules_[i]->module->update();
+      } catch (const std::exception& e) {
+        record_fault(modules_[i]->name, e.what());
+        return false;
+      } catch (...) {
+        record_fault(modules_[i]->name, "an exception that is not a std::exception");
+        return false;
+      }
+    }
     const auto after = Clock::now();
     times_->ns[i] = std::chrono::duration_cast<std::chrono::nanoseconds>(after - before).count();
     before = after;
   }
-  link_.write(*actuator_);
-  if (log_) log_->write_frame();
   return true;
+}
+
+void Runtime::record_fault(const std::string& module, const char* what) {
+  ++safety_->module_errors;
+  for (auto& f : faults_)
+    if (f.module == module) {
+      ++f.count;
+      return;
+    }
+  if (faults_.empty()) safety_->first_error = module + ": " + what;
+  faults_.push_back({module, what, frame_info_->frame, 1});
 }
 
 std::string Runtime::provider_of(const std::string& representation) const {

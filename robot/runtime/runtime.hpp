@@ -3,8 +3,9 @@
 // hardware link. One step():
 //   link.read(SensorFrame) -> FrameInfo -> modules in dependency order -> ActuatorFrame ->
 //   link.write
-// SensorFrame, FrameInfo and ModuleTimes are written by the Runtime; ActuatorFrame must be
-// provided by a module (e.g. ActuatorConversion from JointRequest).
+// SensorFrame, FrameInfo, ModuleTimes and CommandSafety are written by the Runtime;
+// ActuatorFrame must be provided by a module (e.g. ActuatorConversion from JointRequest). The
+// command goes through the CommandGuard (limits, NaN hold) on its way to the link.
 #include <memory>
 #include <set>
 #include <string>
@@ -13,8 +14,10 @@
 #include "robot/framework/module_registry.hpp"
 #include "robot/framework/plan.hpp"
 #include "robot/hal/hardware_link.hpp"
+#include "robot/representations/command_safety.hpp"
 #include "robot/representations/frame_info.hpp"
 #include "robot/representations/hal_reflection.hpp"
+#include "robot/runtime/command_guard.hpp"
 #include "robot/runtime/log.hpp"
 #include "robot/runtime/runtime_config.hpp"
 
@@ -29,8 +32,22 @@ class Runtime {
   Runtime(const Runtime&) = delete;
   Runtime& operator=(const Runtime&) = delete;
 
-  // One frame. False (and nothing run) when the link reports it is lost.
+  // One frame. False (and nothing run) when the link reports it is lost. A module's exception
+  // leaves step() or, with ModuleErrorPolicy::Hold, makes the frame send the last safe command.
   bool step();
+
+  // Module exceptions caught under ModuleErrorPolicy::Hold: one entry per module, in the order
+  // they first failed.
+  struct ModuleFault {
+    std::string module;
+    std::string message;     // the first one
+    std::int64_t frame = 0;  // where it first failed
+    std::int64_t count = 0;  // frames it failed in
+  };
+  const std::vector<ModuleFault>& module_faults() const { return faults_; }
+  // The command the link was last given (after the guard).
+  const hal::ActuatorFrame& last_command() const { return guard_.last_safe(); }
+  const model::RobotModel* robot_model() const { return config_.model.get(); }
 
   const std::vector<std::string>& module_order() const { return order_; }
   std::string provider_of(const std::string& representation) const;  // "" for built-ins
@@ -78,6 +95,8 @@ class Runtime {
   Slot& parameter_slot(const std::string& module);
   int debug_request_index(std::string_view name);
   void replan(const std::map<std::string, std::string>& chosen);
+  bool run_modules();  // false: a module threw and the policy holds
+  void record_fault(const std::string& module, const char* what);
 
   const ModuleRegistry& registry_;
   RuntimeConfig config_;
@@ -99,6 +118,11 @@ class Runtime {
   FrameInfo* frame_info_ = nullptr;
   ModuleTimes* times_ = nullptr;
   hal::ActuatorFrame* actuator_ = nullptr;
+  CommandSafety* safety_ = nullptr;
+  CommandGuard guard_;
+  hal::ActuatorFrame command_;        // what goes to the link this frame
+  model::RobotModel declaring_model_;  // handed out while learning declarations without a model
+  std::vector<ModuleFault> faults_;
   std::int64_t frame_counter_ = 0;
   std::unique_ptr<LogWriter> log_;
 };

@@ -9,7 +9,7 @@
 #include "robot/core/xml_error.hpp"
 #include "simulator/devices/device_description.hpp"
 #include "simulator/devices/device_parser.hpp"
-#include "simulator/scene/xml_element.hpp"
+#include "robot/core/xml_element.hpp"
 
 namespace stride::sim {
 namespace {

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_description.hpp"
 
 namespace stride::sim {
@@ -55,21 +56,6 @@ struct UnevenPatch {
   double max_tilt = 0.02;     // rad, each tile tilted uniformly in [-max_tilt, max_tilt] per axis
   double friction = 0.8;
   std::uint64_t seed = 0;  // 0: derived from the scene seed
-};
-
-// A change to a running controller at a given time: a provider swap or a parameter value.
-struct ControllerChange {
-  double time = 0;  // s since the scene started
-  enum class Kind { Provider, Parameter } kind = Kind::Parameter;
-  std::string first, second;  // provider: representation, module; parameter: "Module.field", value
-  std::string file;
-  int line = 0;
-};
-
-struct ControllerConfig {
-  std::map<std::string, std::string> providers;   // representation -> module
-  std::map<std::string, std::string> parameters;  // "Module.field" -> text value
-  std::vector<ControllerChange> changes;          // in time order (stable for equal times)
 };
 
 struct SensorSwitches {

@@ -10,8 +10,9 @@
 #include "robot/core/error.hpp"
 #include "robot/core/pose.hpp"
 #include "robot/core/xml_error.hpp"
+#include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
-#include "simulator/scene/xml_element.hpp"
+#include "robot/core/xml_element.hpp"
 #include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
@@ -339,9 +340,8 @@ class Parser {
         r.sensors.delay = child.boolean_or("delay", true);
         r.sensors.quantise = child.boolean_or("quantise", true);
       } else if (n == "controller") {
-        child.allow_only({});
         r.has_controller = true;
-        controller(child, r.controller);
+        r.controller = parse_controller(child);
       } else if (n == "motor") {
         if (r.devices.empty()) child.fail("<motor> changes the device file, and there is none");
         r.motors.push_back(motor_override(child));
@@ -360,58 +360,6 @@ class Parser {
       }
     }
     out_.robots.push_back(std::move(r));
-  }
-
-  // A <provider> or <parameter> element as (representation, module) or ("Module.field", value);
-  // anything else fails with `expected`.
-  static ControllerChange setting(const XmlElement& e, const char* expected) {
-    ControllerChange c;
-    c.file = e.file();
-    c.line = e.line();
-    if (e.name() == "provider") {
-      e.allow_only({"representation", "module"});
-      c.kind = ControllerChange::Kind::Provider;
-      c.first = e.text("representation");
-      c.second = e.text("module");
-    } else if (e.name() == "parameter") {
-      e.allow_only({"module", "field", "value"});
-      c.first = e.text("module") + "." + e.text("field");
-      c.second = e.text("value");
-    } else {
-      e.fail(expected);
-    }
-    return c;
-  }
-
-  void controller(const XmlElement& e, ControllerConfig& cfg) {
-    for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      XmlElement child(c, e.file());
-      if (child.name() == "at") {
-        timed_changes(child, cfg);
-        continue;
-      }
-      const ControllerChange s =
-          setting(child, "unknown element in <controller> (expected provider, parameter or at)");
-      (s.kind == ControllerChange::Kind::Provider ? cfg.providers : cfg.parameters)[s.first] =
-          s.second;
-    }
-    std::stable_sort(cfg.changes.begin(), cfg.changes.end(),
-                     [](const auto& a, const auto& b) { return a.time < b.time; });
-  }
-
-  // <at time="5s"> with <provider> and <parameter> children: applied at the first control frame
-  // at or after that time, in the order written.
-  void timed_changes(const XmlElement& e, ControllerConfig& cfg) {
-    e.allow_only({"time"});
-    const double time = e.number("time", Dimension::Time);
-    if (!(time >= 0)) e.fail_attr("time", "expected a time >= 0");
-    if (!e.raw()->FirstChildElement()) e.fail("expected <provider> or <parameter> inside <at>");
-    for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
-      ControllerChange change = setting(XmlElement(c, e.file()),
-                                        "unknown element in <at> (expected provider or parameter)");
-      change.time = time;
-      cfg.changes.push_back(std::move(change));
-    }
   }
 
   void push(const XmlElement& e) {

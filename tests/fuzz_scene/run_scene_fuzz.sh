@@ -7,8 +7,8 @@ cd "$(dirname "$0")/../.."
 seconds=${1:-600}
 out=build-fuzz
 mkdir -p "$out/scene_corpus"
-srcs=(tests/fuzz_scene/scene_fuzzer.cpp simulator/scene/scene_parser.cpp simulator/scene/units.cpp
-      simulator/scene/xml_element.cpp robot/model/urdf_loader.cpp robot/model/urdf_validation.cpp
+srcs=(tests/fuzz_scene/scene_fuzzer.cpp simulator/scene/scene_parser.cpp robot/core/units.cpp
+      robot/core/xml_element.cpp robot/model/urdf_loader.cpp robot/model/urdf_validation.cpp
       robot/model/robot_model.cpp)
 clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -I. -I/usr/include/eigen3 \
   "${srcs[@]}" -ltinyxml2 $(pkg-config --libs urdfdom) -o "$out/scene_fuzzer"

@@ -67,6 +67,27 @@ TEST(LegIk, UnreachablePoseIsClampedFlaggedAndFinite) {
   EXPECT_NEAR(r.position_error, wanted.norm() - nao::kThighLength - nao::kTibiaLength, 1e-12);
 }
 
+TEST(LegIk, SolutionBeyondTheJointLimitsIsReachableButSaysSo) {
+  // A knee of 2.6 rad (the limit is 2.11255): the ankle is geometrically reachable.
+  const LegAngles bent{0, 0.05, -1.3, 2.6, -1.1, -0.05};
+  const LegIkResult r = leg_ik(Side::Left, leg_fk(Side::Left, bent));
+  EXPECT_TRUE(r.reachable);
+  EXPECT_NEAR(r.q[3], 2.6, 1e-9);
+  EXPECT_FALSE(r.within_limits());
+  EXPECT_EQ(r.beyond_limits, 1u << 3);  // the knee and nothing else
+  // Within the limits: no bit.
+  const LegAngles stand{0, 0, -0.4, 0.8, -0.4, 0};
+  EXPECT_TRUE(leg_ik(Side::Left, leg_fk(Side::Left, stand)).within_limits());
+  // The right leg's roll limits are mirrored: a hip roll of +0.5 is beyond it (max 0.379435).
+  const LegAngles rolled{0, 0.5, -0.4, 0.8, -0.4, -0.3};
+  EXPECT_EQ(leg_ik(Side::Right, leg_fk(Side::Right, rolled)).beyond_limits, 1u << 1);
+  EXPECT_EQ(leg_limit_violations(Side::Left, rolled), 0u);
+  // Both legs: the right leg keeps its own bits.
+  const LegsIkResult both = legs_ik(leg_fk(Side::Left, stand), leg_fk(Side::Right, rolled));
+  EXPECT_TRUE(both.left.within_limits());
+  EXPECT_EQ(both.right.beyond_limits, 1u << 1);
+}
+
 TEST(LegIk, NoJumpWhenCrossingTheStretchedBoundary) {
   LegAngles q{0, 0.1, -0.4, 0.3, -0.2, -0.05};
   Eigen::Isometry3d target = leg_fk(Side::Left, q);

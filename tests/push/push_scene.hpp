@@ -17,7 +17,6 @@ inline std::string scene_path() {
 inline std::unique_ptr<console::SimSession> balance_session(const std::string& module) {
   sim::SceneDescription scene = sim::parse_scene_file(scene_path());
   scene.robots[0].controller.providers["JointRequest"] = module;
-  scene.robots[0].controller.parameters["ComStateEstimator.urdf"] = scene.robots[0].urdf;
   return std::make_unique<console::SimSession>(std::move(scene));
 }
 

@@ -179,3 +179,28 @@ TEST(WalkModules, BadParametersNameTheField) {
 
 }  // namespace
 }  // namespace stride
+
+namespace stride {
+namespace {
+
+// A waist 0.2 m above the soles needs knees of about 2.4 rad, beyond the NAO's 2.11: the walk
+// counts every such frame and says which joints.
+TEST(WalkModules, CountsFramesWhoseLegIkIsBeyondTheJointLimits) {
+  RuntimeConfig crouched = walk_config("PatternWalk", "medium");
+  crouched.parameters["PatternWalk.z_min"] = "0.2";
+  crouched.parameters["PatternWalk.z_max"] = "0.2";
+  StillLink link;
+  Runtime rt(Rig::registry(), crouched, link);
+  for (int i = 0; i < 100; ++i) rt.step();
+  const auto& r = rt.representation<WalkingJointRequest>();
+  EXPECT_EQ(r.ik_beyond_limit_frames, 100);
+  EXPECT_TRUE(r.ik_beyond_limits & (1u << 3)) << "left knee";
+  EXPECT_TRUE(r.ik_beyond_limits & (1u << 9)) << "right knee";
+
+  Rig medium("PatternWalk");  // the thesis' medium walk stays within the limits throughout
+  for (int i = 0; i < 1500; ++i) medium.rt.step();
+  EXPECT_EQ(medium.request().ik_beyond_limit_frames, 0);
+}
+
+}  // namespace
+}  // namespace stride

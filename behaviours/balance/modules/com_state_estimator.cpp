@@ -1,13 +1,11 @@
 #include "behaviours/balance/modules/com_state_estimator.hpp"
 
 #include <cmath>
-#include <memory>
 #include <span>
 
 #include "behaviours/balance/com_kalman_filter.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/model/link_poses.hpp"
-#include "robot/model/urdf_loader.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 #include "robot/representations/frame_info.hpp"
 #include "robot/representations/fsr_sensor_data.hpp"
@@ -76,7 +74,10 @@ Eigen::Isometry3d level_ground_from_torso(const std::array<double, hal::kNumJoin
 KinematicCom::KinematicCom(model::RobotModel model)
     : model_(std::move(model)),
       map_(model::make_nao_joint_map(model_)),
-      q_(model::zero_joints(model_)) {}
+      q_(model::zero_joints(model_)),
+      // Sized here so no frame allocates; computed per frame (the model may be the empty one a
+      // Runtime hands out while it learns the modules' declarations).
+      poses_(model_.links.size(), Eigen::Isometry3d::Identity()) {}
 
 Eigen::Vector3d KinematicCom::in_torso(const std::array<double, hal::kNumJoints>& lola) {
   model::joints_from_lola(model_, map_, lola, q_);
@@ -131,17 +132,18 @@ class ComStateEstimator final : public Module {
         inertial_(c.require<InertialSensorData>()),
         params_(c.parameters<ComStateEstimatorParameters>()),
         state_(c.provide<ComState>()),
-        model_out_(c.provide<BalanceModel>()) {}
+        model_out_(c.provide<BalanceModel>()),
+        com_(c.robot_model()) {}
 
   void update() override {
-    if (!com_) {
-      com_ = std::make_unique<KinematicCom>(model::load_urdf(params_.urdf));
-      model_out_ = com_->balance_model(joints_.position);  // first frame: the standing posture
+    if (!stand_measured_) {
+      model_out_ = com_.balance_model(joints_.position);  // first frame: the standing posture
+      stand_measured_ = true;
     }
     const Eigen::Isometry3d torso_to_ground =
         params_.use_imu_tilt ? level_ground_from_torso(joints_.position, inertial_.angles)
                              : ground_in_torso(joints_.position).inverse();
-    const Eigen::Vector3d com = torso_to_ground * com_->in_torso(joints_.position);
+    const Eigen::Vector3d com = torso_to_ground * com_.in_torso(joints_.position);
     state_.measured_com = com;
     state_.com_height = com.z();
     if (!fsr_.cop_torso_valid || !(frame_.period > 0) || !(com.z() > 0)) return;
@@ -191,7 +193,8 @@ class ComStateEstimator final : public Module {
   const ComStateEstimatorParameters& params_;
   ComState& state_;
   BalanceModel& model_out_;
-  std::unique_ptr<KinematicCom> com_;
+  KinematicCom com_;
+  bool stand_measured_ = false;
   balance::ComEstimate estimate_;
 };
 

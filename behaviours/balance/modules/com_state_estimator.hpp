@@ -3,7 +3,6 @@
 // 3D-LIPM Kalman filter of Eqs. 7.1-7.4, in the ground frame between the feet.
 //   JointSensorData, FsrSensorData, InertialSensorData, FrameInfo -> ComState, BalanceModel
 #include <array>
-#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -17,8 +16,7 @@
 namespace stride::behaviours {
 
 struct ComStateEstimatorParameters {
-  std::string urdf = "scenes/robots/nao/nao.urdf";  // mass model; relative to the working dir
-  double sigma_position = 1e-4;                     // process noise std-devs per step (Q)
+  double sigma_position = 1e-4;  // process noise std-devs per step (Q)
   double sigma_velocity = 5e-2;
   double sigma_zmp = 2e-2;  // the ZMP input (Eq. 7.4) is unknown: it is absorbed here
   double sigma_com = 1e-3;  // measurement noise std-devs (R)
@@ -31,7 +29,7 @@ struct ComStateEstimatorParameters {
   static constexpr auto fields() {
     using P = ComStateEstimatorParameters;
     return std::make_tuple(
-        field("urdf", &P::urdf), field("sigma_position", &P::sigma_position, "m", Range{0, 1}),
+        field("sigma_position", &P::sigma_position, "m", Range{0, 1}),
         field("sigma_velocity", &P::sigma_velocity, "m/s", Range{0, 10}),
         field("sigma_zmp", &P::sigma_zmp, "m", Range{0, 1}),
         field("sigma_com", &P::sigma_com, "m", Range{1e-9, 1}),
@@ -49,7 +47,8 @@ Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lol
 Eigen::Isometry3d level_ground_from_torso(const std::array<double, hal::kNumJoints>& lola,
                                           const Eigen::Vector2d& torso_roll_pitch);
 
-// Whole-body CoM of a RobotModel (root = torso) at the LoLA angles, in the torso frame.
+// Whole-body CoM of a RobotModel (root = torso) at the LoLA angles, in the torso frame. Sized
+// at construction: computing allocates nothing.
 class KinematicCom {
  public:
   explicit KinematicCom(model::RobotModel model);

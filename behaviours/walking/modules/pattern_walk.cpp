@@ -28,6 +28,7 @@ WalkingJointRequest walking_request(const walking::LegJoints& legs) {
     r.position[hal::index(right[i])] = legs.right[i];
     r.stiffness[hal::index(right[i])] = kWalkLegStiffness;
   }
+  r.ik_beyond_limits = legs.beyond_limits;
   return r;
 }
 
@@ -58,6 +59,8 @@ class PatternPlayer final : public Module {
     const double t = pattern_time(frame_.time, *first_time_, params_.start_delay);
     const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
     request_ = walking_request(walking::leg_joints(pattern_->sample(t_clamped)));
+    if (request_.ik_beyond_limits != 0) ++beyond_limit_frames_;
+    request_.ik_beyond_limit_frames = beyond_limit_frames_;
     const double elapsed = frame_.time - *first_time_;
     if (t >= 0 || elapsed >= params_.interpolation_time) return;
     // Standing up: a cosine blend (zero velocity at both ends) from the measured pose.
@@ -76,6 +79,7 @@ class PatternPlayer final : public Module {
   WalkParameters built_from_;
   std::optional<double> first_time_;
   std::array<double, hal::kNumJoints> start_pose_{};
+  std::int64_t beyond_limit_frames_ = 0;
 };
 
 }  // namespace

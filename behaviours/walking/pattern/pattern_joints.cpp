@@ -19,7 +19,8 @@ Eigen::Isometry3d relative_to_waist(const Eigen::Vector3d& foot, const Eigen::Ve
 LegJoints leg_joints(const PatternSample& s) {
   const model::LegsIkResult ik = model::legs_ik(relative_to_waist(s.left_foot, s.waist),
                                                 relative_to_waist(s.right_foot, s.waist));
-  return {ik.left.q, ik.right.q, ik.left.reachable && ik.right.reachable};
+  return {ik.left.q, ik.right.q, ik.left.reachable && ik.right.reachable,
+          static_cast<std::uint16_t>(ik.left.beyond_limits | (ik.right.beyond_limits << 6))};
 }
 
 LegPoints leg_points(model::Side side, const model::LegAngles& q, const Eigen::Vector3d& waist) {

@@ -2,6 +2,7 @@
 // Leg joint angles of a pattern sample (Sec. 3.6, Fig. 3.13): the feet relative to the waist,
 // p_f - p_w, with the torso upright and the soles flat, through the analytic leg IK.
 #include <array>
+#include <cstdint>
 #include <string_view>
 
 #include <Eigen/Core>
@@ -15,6 +16,9 @@ struct LegJoints {
   model::LegAngles left{};  // HipYawPitch, HipRoll, HipPitch, KneePitch, AnklePitch, AnkleRoll
   model::LegAngles right{};
   bool reachable = true;  // false: a foot was out of the leg's reach and the IK clamped it
+  // Angles outside the NAO's joint limits: bit i for column i of kLegJointNames (left 0-5, right
+  // 6-11). The command guard will clamp them; the pattern asked for more than the robot can do.
+  std::uint16_t beyond_limits = 0;
 };
 
 // The twelve columns in the order of LegJoints (left leg, then right leg).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/nao/joint_limits.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 
 namespace stride::model {
@@ -231,24 +232,41 @@ LegIkResult solve_leg_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sol
   return r;
 }
 
+LegIkResult with_limits(Side side, LegIkResult r) {
+  r.beyond_limits = leg_limit_violations(side, r.q);
+  return r;
+}
+
 }  // namespace
+
+std::uint8_t leg_limit_violations(Side side, const LegAngles& q) {
+  const auto joints = chain_joints(leg_chain(side));
+  std::uint8_t bits = 0;
+  for (int i = 0; i < kLegJoints; ++i) {
+    const auto& lim = nao::kJointLimits[hal::index(joints[i])];
+    if (!(q[i] >= lim.lower && q[i] <= lim.upper)) bits |= static_cast<std::uint8_t>(1u << i);
+  }
+  return bits;
+}
 
 LegIkResult leg_ik(Side side, const Eigen::Isometry3d& sole_in_torso) {
   CosSin yaw_pitch;
-  return solve_leg(side, sole_in_torso, yaw_pitch);
+  return with_limits(side, solve_leg(side, sole_in_torso, yaw_pitch));
 }
 
 LegIkResult leg_ik_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sole_in_torso,
                                       double hip_yaw_pitch) {
-  return solve_leg_with_hip_yaw_pitch(side, sole_in_torso, hip_yaw_pitch,
-                                      {std::cos(hip_yaw_pitch), std::sin(hip_yaw_pitch)});
+  return with_limits(side, solve_leg_with_hip_yaw_pitch(
+                               side, sole_in_torso, hip_yaw_pitch,
+                               {std::cos(hip_yaw_pitch), std::sin(hip_yaw_pitch)}));
 }
 
 LegsIkResult legs_ik(const Eigen::Isometry3d& left_sole, const Eigen::Isometry3d& right_sole) {
   LegsIkResult r;
   CosSin yaw_pitch;
-  r.left = solve_leg(Side::Left, left_sole, yaw_pitch);
-  r.right = solve_leg_with_hip_yaw_pitch(Side::Right, right_sole, r.left.q[0], yaw_pitch);
+  r.left = with_limits(Side::Left, solve_leg(Side::Left, left_sole, yaw_pitch));
+  r.right = with_limits(Side::Right, solve_leg_with_hip_yaw_pitch(Side::Right, right_sole,
+                                                                  r.left.q[0], yaw_pitch));
   return r;
 }
 

@@ -2,6 +2,8 @@
 // Analytic inverse kinematics of the NAO legs: sole pose in the torso frame -> six joint angles.
 // Angles in the robot's sign convention, order HipYawPitch, HipRoll, HipPitch, Knee, AnklePitch,
 // AnkleRoll (as nao_fk.hpp). Knee >= 0 (the NAO's knee bends one way). Allocation-free.
+#include <cstdint>
+
 #include <Eigen/Geometry>
 
 #include "robot/model/kinematics/nao_chains.hpp"
@@ -10,13 +12,22 @@ namespace stride::model {
 
 struct LegIkResult {
   LegAngles q{};
+  // Geometric only: the ankle target lies within the leg's reach (limits are beyond_limits').
   bool reachable = true;      // false: the ankle target was moved onto the reachable shell
   bool knee_clamped = false;  // the target was beyond the stretched leg (knee set to 0)
   double position_error = 0;  // distance the ankle target had to move (m)
   double orientation_error =
       0;  // rotation (rad) between the reached and the wanted foot; only
           // non-zero when HipYawPitch was imposed (leg_ik_with_hip_yaw_pitch)
+  // Joints whose angle lies outside the NAO's limits (nao/joint_limits.hpp): bit i for q[i].
+  // The angles are left as solved: clamping them is the command guard's job, and saying so here
+  // lets a walking module count the frames it asked for more than the robot can do.
+  std::uint8_t beyond_limits = 0;
+  bool within_limits() const { return beyond_limits == 0; }
 };
+
+// Bit i set for each angle of a leg (chain order) outside the NAO's joint limits.
+std::uint8_t leg_limit_violations(Side side, const LegAngles& q);
 
 // Full 6-DoF solution: reaches any pose within the leg's workspace exactly.
 LegIkResult leg_ik(Side side, const Eigen::Isometry3d& sole_in_torso);

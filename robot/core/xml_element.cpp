@@ -1,4 +1,4 @@
-#include "simulator/scene/xml_element.hpp"
+#include "robot/core/xml_element.hpp"
 
 #include <charconv>
 #include <sstream>
@@ -7,7 +7,7 @@
 
 #include "robot/core/error.hpp"
 
-namespace stride::sim {
+namespace stride {
 
 void XmlElement::fail(const std::string& message) const {
   throw error_at(file_, line(), "<" + std::string(name()) + ">: " + message);
@@ -137,4 +137,4 @@ int XmlElement::choice_or(const char* attr, std::initializer_list<std::string_vi
   fail_attr(attr, "'" + t + "' (expected one of " + list + ")");
 }
 
-}  // namespace stride::sim
+}  // namespace stride

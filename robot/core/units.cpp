@@ -1,11 +1,11 @@
-#include "simulator/scene/units.hpp"
+#include "robot/core/units.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
-namespace stride::sim {
+namespace stride {
 namespace {
 
 struct Unit {
@@ -79,4 +79,4 @@ double parse_quantity(std::string_view text, Dimension d) {
                               "' (expected " + std::string(dimension_name(d)) + ")");
 }
 
-}  // namespace stride::sim
+}  // namespace stride

@@ -11,9 +11,9 @@
 #include <tinyxml2.h>
 #include <Eigen/Core>
 
-#include "simulator/scene/units.hpp"
+#include "robot/core/units.hpp"
 
-namespace stride::sim {
+namespace stride {
 
 class XmlElement {
  public:
@@ -54,4 +54,4 @@ class XmlElement {
   const std::string& file_;
 };
 
-}  // namespace stride::sim
+}  // namespace stride

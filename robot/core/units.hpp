@@ -1,9 +1,9 @@
 #pragma once
-// Quantities in scene files: SI by default, or a number followed by a unit of the right kind.
+// Quantities in scene and robot config files: SI by default, or a number followed by a unit of the right kind.
 #include <string>
 #include <string_view>
 
-namespace stride::sim {
+namespace stride {
 
 enum class Dimension { None, Length, Angle, Mass, Time, Force, Frequency };
 
@@ -13,4 +13,4 @@ std::string_view dimension_name(Dimension d);
 // names what was expected (the caller adds file:line and the attribute).
 double parse_quantity(std::string_view text, Dimension d);
 
-}  // namespace stride::sim
+}  // namespace stride

@@ -1,0 +1,72 @@
+#include "console/cli/lola_run.hpp"
+
+#include <ostream>
+
+#include "robot/core/error.hpp"
+#include "robot/hal/lola/lola_protocol.hpp"
+
+namespace stride::cli {
+namespace {
+
+int lola_robot(const sim::SceneDescription& scene, const LolaRunOptions& o) {
+  if (scene.robots.empty()) throw Error("stride run: --lola: the scene has no robot");
+  if (o.robot.empty()) return 0;
+  for (std::size_t i = 0; i < scene.robots.size(); ++i)
+    if (scene.robots[i].name == o.robot) return static_cast<int>(i);
+  throw Error("stride run: --robot: no robot named '" + o.robot + "' in the scene");
+}
+
+}  // namespace
+
+LolaRunOptions read_lola_options(ArgumentReader& a) {
+  LolaRunOptions o;
+  o.socket = a.text_or("--lola", "");
+  o.packets = a.flag("--lola-packets");
+  o.realtime = a.flag("--realtime");
+  const bool has_robot = a.has("--robot"), has_wait = a.has("--lola-wait");
+  o.robot = a.text_or("--robot", "");
+  o.wait = a.number_or("--lola-wait", o.wait);
+  if (!o.socket.empty() && o.packets)
+    throw Error("stride run: --lola and --lola-packets: expected one of them");
+  if (!o.any() && (has_robot || o.realtime || has_wait))
+    throw Error("stride run: --robot, --realtime and --lola-wait go with --lola <socket>");
+  if (o.packets && (o.realtime || has_wait))
+    throw Error("stride run: --realtime and --lola-wait go with --lola <socket>");
+  if (!(o.wait > 0)) throw Error("stride run: --lola-wait: expected a time > 0 s");
+  return o;
+}
+
+sim::SceneDescription lola_scene(sim::SceneDescription scene, const LolaRunOptions& o) {
+  if (!o.any()) return scene;
+  auto& r = scene.robots[lola_robot(scene, o)];
+  if (r.period == 0) r.period = hal::lola::kPeriod;
+  if (!o.socket.empty()) {
+    r.has_controller = false;  // the LoLA client controls it
+    r.controller = {};
+  } else if (!r.has_controller) {
+    throw Error("stride run: --lola-packets: robot '" + r.name + "' has no <controller>");
+  }
+  return scene;
+}
+
+std::unique_ptr<sim::LolaServer> attach_lola(console::SimSession& session,
+                                             const LolaRunOptions& o, std::ostream& events) {
+  if (!o.any()) return nullptr;
+  auto& sim = session.simulation();
+  const int robot = lola_robot(sim.scene(), o);
+  if (o.packets) {
+    session.route_through_lola_packets(robot);
+    return nullptr;
+  }
+  auto server = std::make_unique<sim::LolaServer>(
+      o.socket, o.realtime ? sim::LolaPacing::Realtime : sim::LolaPacing::Lockstep,
+      sim.robot(robot), events);
+  events << "lola: robot '" << sim.robot(robot).name() << "' waits for a client on " << o.socket
+         << std::endl;
+  server->wait_for_client(o.wait);
+  sim::LolaServer* s = server.get();
+  sim.set_controller(robot, [s](sim::SimulatedRobot& r) { s->exchange(r); });
+  return server;
+}
+
+}  // namespace stride::cli

@@ -1,0 +1,40 @@
+#include "robot/app/robot_main.hpp"
+
+#include <ostream>
+
+#include "robot/app/flags.hpp"
+#include "robot/app/robot_process.hpp"
+#include "robot/app/stop_signals.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride {
+
+int robot_main(std::span<const std::string> args, const ModuleRegistry& registry,
+               std::ostream& out, std::ostream& err) {
+  StopSignals stop;  // from here on SIGINT/SIGTERM end the run between frames
+  std::unique_ptr<RobotProcess> robot;
+  try {
+    const Flags f = read_flags(args, {"--config", "--lola", "--log"}, "stride robot");
+    if (!f.positional.empty())
+      throw Error("stride robot: unexpected argument '" + f.positional[0] + "'");
+    const std::string config_path = f.value_or("--config", "");
+    if (config_path.empty()) throw Error("stride robot: --config <robot.xml> is required");
+    RobotConfig config = parse_robot_config_file(config_path);
+    config.lola_socket = f.value_or("--lola", config.lola_socket);
+    robot = std::make_unique<RobotProcess>(std::move(config), registry, err);
+    const std::string log = f.value_or("--log", "");
+    if (!log.empty()) robot->start_log(log);
+  } catch (const Error& e) {
+    err << e.what() << std::endl;
+    return kRobotBadInput;
+  }
+  const int code = robot->run([&] { return stop.requested(); });
+  if (stop.signal() != 0)
+    err << "stride robot: " << (stop.signal() == SIGINT ? "SIGINT" : "SIGTERM")
+        << ": stopped after a complete frame" << std::endl;
+  out << robot->summary() << std::flush;
+  robot.reset();  // closes the log and the socket
+  return code;
+}
+
+}  // namespace stride

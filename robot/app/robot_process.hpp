@@ -1,0 +1,58 @@
+#pragma once
+// The robot runtime as it runs on a NAO: the configured controller on the LoLA link, with the
+// safety a robot with real motors needs. Frame by frame until asked to stop:
+//   LoLA packet -> Runtime (modules; a failing one holds the frame) -> CommandGuard -> LoLA answer
+// The link lost (socket closed or no packet for two periods): the last command stays, the loss is
+// reported at once, and after the configured timeout without the link the run ends (exit code 2).
+#include <functional>
+#include <iosfwd>
+#include <memory>
+
+#include "robot/app/robot_config.hpp"
+#include "robot/framework/module_registry.hpp"
+#include "robot/hal/lola/lola_link.hpp"
+#include "robot/runtime/runtime.hpp"
+
+namespace stride {
+
+// Exit codes of `stride robot`.
+enum RobotExit : int {
+  kRobotStopped = 0,       // stopped on request (SIGINT/SIGTERM)
+  kRobotBadInput = 1,      // configuration or command-line error: nothing ran
+  kRobotLinkLost = 2,      // no LoLA link for longer than the timeout
+  kRobotModuleFailed = 3,  // a module threw and the config says on_module_error="stop"
+};
+
+class RobotProcess {
+ public:
+  // Loads the model, connects to LoLA (waiting up to connect_timeout) and builds the controller;
+  // throws stride::Error naming the file or socket. `events` gets one line per event as it happens.
+  RobotProcess(RobotConfig config, const ModuleRegistry& registry, std::ostream& events);
+  ~RobotProcess();
+
+  void start_log(const std::string& path) { runtime_->start_log(path); }
+  // Runs until `stop_requested()` (asked between frames) or a fault ends the run.
+  int run(const std::function<bool()>& stop_requested);
+  // What happened, for the end of a run: frames, link, safety and module counts.
+  std::string summary() const;
+
+  const Runtime& runtime() const { return *runtime_; }
+  const hal::lola::LolaLink& link() const { return *link_; }
+
+ private:
+  bool link_down(double& lost_for);  // false: give up (timeout)
+  void report_frame_events();
+
+  RobotConfig config_;
+  std::ostream& events_;
+  std::unique_ptr<hal::lola::LolaLink> link_;
+  std::unique_ptr<Runtime> runtime_;
+  std::size_t faults_reported_ = 0;
+  std::int64_t frames_ = 0;
+  bool lost_ = false;
+  std::chrono::steady_clock::time_point lost_at_;
+  std::chrono::steady_clock::time_point last_error_line_{};
+  std::int64_t errors_unreported_ = 0;
+};
+
+}  // namespace stride
