@@ -12,6 +12,7 @@
 
 #include "robot/hal/lola/actuator_packet.hpp"
 #include "robot/hal/lola/lola_link.hpp"
+#include "robot/hal/lola/lola_protocol.hpp"
 #include "robot/hal/lola/packet_stream.hpp"
 #include "robot/hal/lola/sensor_packet.hpp"
 #include "robot/hal/unix_socket.hpp"
@@ -118,3 +119,5 @@ BENCHMARK(BM_LolaRoundTripOverUnixSocket)->UseRealTime();
 
 }  // namespace
 }  // namespace stride::bench
+
+BENCHMARK_MAIN();

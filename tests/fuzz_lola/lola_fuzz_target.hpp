@@ -35,7 +35,8 @@ inline std::string decode_lola_fuzz_input(const std::uint8_t* data, std::size_t 
         hal::lola::PacketStream stream;
         std::size_t at = 0;
         while (at < bytes.size()) {
-          const std::size_t n = std::min<std::size_t>(bytes.size() - at, 1 + bytes[at] % 64);
+          const std::size_t n = std::min<std::size_t>(
+              bytes.size() - at, 1 + static_cast<unsigned char>(bytes[at]) % 64);
           stream.append(bytes.subspan(at, n));
           at += n;
           std::span<const char> packet;
