@@ -3,6 +3,7 @@
 // setup order and equal those of running the walks one by one.
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "console/experiments/walk_recording.hpp"
@@ -13,7 +14,9 @@ namespace stride::experiments {
 // Records every setup with up to `jobs` workers (1: in this process) and hands each recording to
 // `use` in setup order; `use` returns false to stop early (the remaining walks are abandoned).
 // A walk's stride::Error is rethrown when its turn comes, after the earlier walks were used.
+// A progress line named `label` counts the walks done and lost (fell or tipped) on stderr.
 void record_walks(const std::vector<WalkSetup>& setups, int jobs,
-                  const std::function<bool(std::size_t, WalkRecording&&)>& use);
+                  const std::function<bool(std::size_t, WalkRecording&&)>& use,
+                  const std::string& label = "experiment");
 
 }  // namespace stride::experiments
