@@ -6,15 +6,16 @@
 #include <ostream>
 #include <sstream>
 
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::experiments {
 
 std::string scene_path(const ExperimentOptions& o, const std::string& name) {
-  const std::filesystem::path p = std::filesystem::path(o.scenes_dir) / (name + ".xml");
+  // A relative directory not under the working directory is the data directory's (data_dir.hpp).
+  const std::filesystem::path p = std::filesystem::path(find_input(o.scenes_dir)) / (name + ".xml");
   if (!std::filesystem::exists(p))
-    throw Error("experiment scene '" + p.string() +
-                "' not found: run from the repository root or pass --scenes <dir>");
+    throw Error("experiment scene '" + p.string() + "' not found (--scenes <dir> chooses another)");
   return p.string();
 }
 

@@ -8,6 +8,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/urdf_validation.hpp"
 
@@ -143,7 +144,8 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
   return model;
 }
 
-RobotModel load_urdf(const std::string& path) {
+RobotModel load_urdf(const std::string& given) {
+  const std::string path = find_input(given);  // a shipped robot from any working directory
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open URDF file");
   std::stringstream ss;

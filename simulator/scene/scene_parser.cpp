@@ -7,12 +7,13 @@
 #include <set>
 #include <sstream>
 
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/pose.hpp"
+#include "robot/core/xml_element.hpp"
 #include "robot/core/xml_error.hpp"
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
-#include "robot/core/xml_element.hpp"
 #include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
@@ -403,7 +404,8 @@ SceneDescription parse_scene_file(const std::string& path) {
   return parse_scene_file(path, {});
 }
 
-SceneDescription parse_scene_file(const std::string& path, const PhysicsAttributes& physics_over) {
+SceneDescription parse_scene_file(const std::string& given, const PhysicsAttributes& physics_over) {
+  const std::string path = find_input(given);  // a shipped scene from any working directory
   SceneDescription s;
   s.file = path;
   Parser p(s, physics_over);
