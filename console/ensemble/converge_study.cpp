@@ -27,7 +27,7 @@ void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s
                mean(e.steps), e.steps.sd, mean(e.foot_slip_net_x), mean(e.foot_tilted_time),
                e.real_time_factor, e.wall_per_member});
   }
-  const std::string x = "setting # (converge_settings.txt)";
+  const std::string x = "setting, numbered as in the table";
   experiments::write_plot(o.files, t, "converge_distance", o.scene + ": kept walks' true distance",
                           "setting",
                           {{"distance_mean", "mean", ""},
