@@ -6,6 +6,7 @@ find_package(tinyxml2 REQUIRED)
 find_package(Threads REQUIRED)
 pkg_check_modules(URDFDOM REQUIRED IMPORTED_TARGET urdfdom)
 find_package(msgpack REQUIRED CONFIG)  # Debian's msgpack-cxx: target msgpackc-cxx
+find_package(ZLIB REQUIRED)  # log frame checksums
 if(STRIDE_ROBOT_ONLY)
   return()
 endif()

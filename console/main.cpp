@@ -1,15 +1,47 @@
 // `stride`: the single entry point. Subcommand names dispatch through console/cli/subcommands.cpp;
 // anything else opens the console (REPL, --script, -c) on an optional scene.
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
 #include "console/cli/subcommand.hpp"
 #include "console/repl/console_entry.hpp"
 
+namespace {
+
+int dispatch(const std::vector<std::string>& args);
+
+// Standard output is an output like any other: a full disk or /dev/full under `>` is an error
+// and a non-zero exit, not a report nobody can read.
+int checked_exit(int status) {
+  std::cout.flush();
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) {
+    std::cerr << "stride: cannot write standard output: " << std::strerror(errno) << "\n";
+    return status == 0 ? 1 : status;
+  }
+  return status;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    return checked_exit(dispatch(args));
+  } catch (const std::bad_alloc&) {
+    std::cerr << "stride: out of memory\n";
+    return 1;
+  }
+}
+
+namespace {
+
+int dispatch(const std::vector<std::string>& args) {
   const auto& table = stride::cli::subcommands();
   const auto is_help = [](const std::string& a) {
     return a == "--help" || a == "-h" || a == "help";
@@ -36,3 +68,5 @@ int main(int argc, char** argv) {
       }
   return stride::console::console_main(args, std::cout, std::cerr);
 }
+
+}  // namespace

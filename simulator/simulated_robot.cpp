@@ -121,6 +121,15 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
 }
 
 void SimulatedRobot::write(const hal::ActuatorFrame& in) {
+  // A non-finite command would reach ODE's motor rows as NaN; it is a controller bug, named here.
+  for (int l = 0; l < hal::kNumJoints; ++l)
+    for (const auto& [what, v] :
+         {std::pair{"position", in.position[l]}, std::pair{"stiffness", in.stiffness[l]},
+          std::pair{"torque", in.torque[l]}})
+      if (!std::isfinite(v))
+        throw Error("robot '" + placement_.name + "': the controller commanded " +
+                    std::string(hal::kJointNames[l]) + " " + what + " " + std::to_string(v) +
+                    " (expected a finite value)");
   commands_ = in;
   apply_commands();
 }

@@ -5,9 +5,36 @@
 #include <sstream>
 
 #include "robot/core/error.hpp"
+#include "robot/model/physical_limits.hpp"
+#include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::sim {
+namespace {
+
+// Pushes are bounded by limits::kMaxForce each; the sum on one body stays far below this.
+constexpr double kMaxBodyLoad = 1e9;
+
+}  // namespace
+
+void check_push(const Eigen::Vector3d& force, const Eigen::Vector3d& at, double duration) {
+  const auto bound = [](const char* what, const Eigen::Vector3d& v, double most, const char* unit) {
+    for (int k = 0; k < 3; ++k)
+      if (!(std::abs(v[k]) <= most)) {
+        std::ostringstream msg;
+        msg << "push: " << what << " " << v[k] << " " << unit << " outside [" << -most << ", "
+            << most << "]";
+        throw Error(msg.str());
+      }
+  };
+  bound("force", force, limits::kMaxForce, "N");
+  bound("application point", at, limits::kMaxLength, "m");
+  if (!(duration > 0 && duration <= limits::kMaxDuration)) {
+    std::ostringstream msg;
+    msg << "push: duration " << duration << " s outside (0, " << limits::kMaxDuration << "]";
+    throw Error(msg.str());
+  }
+}
 
 Simulation::Simulation(SceneDescription scene) : scene_(std::move(scene)) {
   build();
@@ -34,10 +61,12 @@ void Simulation::build() {
   }
   std::vector<std::unique_ptr<SimulatedRobot>> robots;
   std::vector<int> steps_per_frame;
+  int bodies = 0, geoms = 0;
   for (size_t i = 0; i < scene_.robots.size(); ++i) {
     const auto& placement = scene_.robots[i];
     robots.push_back(std::make_unique<SimulatedRobot>(*world, placement, static_cast<int>(i),
                                                       scene_.physics.seed));
+    check_scene_size(placement, robots.back()->model(), bodies, geoms);
     const double ratio = robots.back()->period() / scene_.physics.step;
     const int n = static_cast<int>(std::lround(ratio));
     if (n < 1 || std::abs(ratio - n) > 1e-9)
@@ -70,6 +99,21 @@ void Simulation::build() {
   steps_ = 0;
 }
 
+void Simulation::check_scene_size(const RobotPlacement& placement, const model::RobotModel& m,
+                                  int& bodies, int& geoms) {
+  bodies += static_cast<int>(m.links.size());
+  for (const auto& l : m.links) geoms += static_cast<int>(l.collisions.size());
+  const auto over = [&](const char* what, int n, int most) {
+    throw error_at(placement.file, placement.line,
+                   "<robot name=\"" + placement.name + "\">: the scene's robots have " +
+                       std::to_string(n) + " " + what + " so far (at most " + std::to_string(most) +
+                       ")");
+  };
+  if (bodies > scene_limits::kMaxBodies) over("links", bodies, scene_limits::kMaxBodies);
+  if (geoms > scene_limits::kMaxRobotGeoms)
+    over("collision shapes", geoms, scene_limits::kMaxRobotGeoms);
+}
+
 void Simulation::reset() {
   build();
 }
@@ -86,7 +130,7 @@ void Simulation::push(const std::string& robot, const std::string& link,
   if (r < 0) throw Error("no robot named '" + robot + "'");
   const int l = robots_[r]->model().link_index(link);
   if (l < 0) throw Error("robot '" + robot + "' has no link named '" + link + "'");
-  if (!(duration > 0)) throw Error("push duration must be > 0 s");
+  check_push(force, at, duration);
   pushes_.push_back({r, l, force, at, time(), time() + duration});
 }
 
@@ -100,6 +144,7 @@ void Simulation::step() {
                           at.z());
   }
   for (auto& r : robots_) r->before_physics_step();
+  check_inputs();
   world_->step();
   ++steps_;
   for (auto& r : robots_) r->after_physics_step(*world_);
@@ -113,10 +158,31 @@ void Simulation::step() {
 }
 
 void Simulation::run_for(double seconds, const std::function<void()>& after_step) {
+  if (const std::string p = limits::duration_problem(seconds); !p.empty()) throw Error("run: " + p);
   const auto n = static_cast<std::uint64_t>(std::llround(seconds / scene_.physics.step));
   for (std::uint64_t k = 0; k < n; ++k) {
     step();
     if (after_step) after_step();
+  }
+}
+
+// What ODE is about to integrate: every force and torque on a robot body finite and bounded. A
+// runaway is reported here, before ODE's own assertions could abort the process.
+void Simulation::check_inputs() const {
+  for (const auto& r : robots_) {
+    const auto& body = r->body();
+    for (int l = 0; l < body.link_count(); ++l) {
+      const dReal* f = dBodyGetForce(body.body(l));
+      const dReal* t = dBodyGetTorque(body.body(l));
+      for (int k = 0; k < 3; ++k)
+        if (!(std::abs(f[k]) <= kMaxBodyLoad && std::abs(t[k]) <= kMaxBodyLoad)) {
+          std::ostringstream msg;
+          msg << "physics diverged at t=" << time() << " s: robot '" << r->name() << "' link '"
+              << body.model().links[l].name << "' has a force of " << f[k] << " N / torque of "
+              << t[k] << " N*m about to be applied (at most " << kMaxBodyLoad << ")";
+          throw Error(msg.str());
+        }
+    }
   }
 }
 

@@ -23,6 +23,10 @@ struct ActivePush {
   double start = 0, end = 0;
 };
 
+// Throws stride::Error("push: force 1e+308 N outside [-1e+07, 1e+07]") for a push beyond the
+// limits (robot/model/physical_limits.hpp): |force| per axis, application point, duration.
+void check_push(const Eigen::Vector3d& force, const Eigen::Vector3d& at, double duration);
+
 class Simulation {
  public:
   // Builds everything from `scene`; throws stride::Error (file:line) and leaves nothing behind.
@@ -54,7 +58,8 @@ class Simulation {
   using Controller = std::function<void(SimulatedRobot&)>;
   void set_controller(int robot, Controller c) { controllers_[robot] = std::move(c); }
 
-  // A force on a robot's link for `duration` seconds from now. Throws if the link is unknown.
+  // A force on a robot's link for `duration` seconds from now. Throws if the link is unknown or
+  // a value is outside the limits (check_push).
   void push(const std::string& robot, const std::string& link, const Eigen::Vector3d& force,
             const Eigen::Vector3d& at, double duration);
 
@@ -66,6 +71,9 @@ class Simulation {
 
  private:
   void build();
+  static void check_scene_size(const RobotPlacement& placement, const model::RobotModel& m,
+                               int& bodies, int& geoms);
+  void check_inputs() const;
   void check_finite() const;
 
   SceneDescription scene_;

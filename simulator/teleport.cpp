@@ -1,18 +1,34 @@
 #include "simulator/teleport.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
 #include "robot/core/error.hpp"
+#include "robot/model/physical_limits.hpp"
 
 namespace stride::sim {
+namespace {
+constexpr double kMaxYaw = 1e3;  // rad
+}  // namespace
 
 void teleport_robot(Simulation& sim, int robot, const Eigen::Vector3d& position, double yaw) {
   if (robot < 0 || robot >= sim.robot_count())
     throw Error("teleport: no robot " + std::to_string(robot));
-  if (!position.allFinite() || !std::isfinite(yaw))
-    throw Error("teleport: position must be finite");
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(position[k]) <= limits::kMaxPosition)) {
+      std::ostringstream msg;
+      msg << "mv: "
+          << "xyz"[k] << " " << position[k] << " m outside [" << -limits::kMaxPosition << ", "
+          << limits::kMaxPosition << "]";
+      throw Error(msg.str());
+    }
+  if (!(std::abs(yaw) <= kMaxYaw)) {
+    std::ostringstream msg;
+    msg << "mv: yaw " << yaw << " rad outside [" << -kMaxYaw << ", " << kMaxYaw << "]";
+    throw Error(msg.str());
+  }
   SimulatedRobot& r = sim.robot(robot);
   const TorsoPose now = r.torso_pose();
   const Eigen::Vector3d from(now.x, now.y, now.z);

@@ -48,7 +48,10 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
         throw Error("stride experiment posture: --cases: expected a,b,... of case names");
     }
     a.finish();
-    return experiments::run_experiment(name, o, out);
+    const int status = experiments::run_experiment(name, o, out);
+    if (status != 0)
+      err << "stride experiment " << name << ": some walks failed (listed with their reasons)\n";
+    return status;
   } catch (const Error& e) {
     err << e.what() << "\n";
     return 1;

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +14,7 @@
 #include "console/cli/subcommand.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::cli {
 
@@ -121,16 +122,6 @@ plot::Table walk_table(const std::vector<Frame>& walk) {
 }
 
 // Figures gnuplot_plot.hpp's 2-D line plots cannot draw (3-D curve, stick diagram).
-void run_gnuplot_script(const std::string& gp_path, const std::string& script) {
-  {
-    std::ofstream f(gp_path);
-    if (!f) throw Error("cannot write " + gp_path);
-    f << script;
-  }
-  if (std::system(("gnuplot '" + gp_path + "' 2>/dev/null").c_str()) != 0)
-    throw Error("gnuplot failed on " + gp_path);
-}
-
 std::string terminal_line(const std::string& png) {
   const std::string term = plot::png_terminal();
   if (term.empty()) throw Error("gnuplot with a png terminal not found (install gnuplot-nox)");
@@ -141,20 +132,20 @@ std::string terminal_line(const std::string& png) {
 void stick_diagram(const std::vector<Frame>& walk, model::Side side, const std::string& dir,
                    const std::string& stem, int every) {
   const std::string dat = dir + "/" + stem + ".dat";
-  {
-    std::ofstream f(dat);
-    for (std::size_t i = 0; i < walk.size(); i += every) {
-      const auto& q = side == model::Side::Left ? walk[i].q.left : walk[i].q.right;
-      const walking::LegPoints l = walking::leg_points(side, q, walk[i].s.waist);
-      for (const Eigen::Vector3d& p : {l.hip, l.knee, l.ankle}) f << p.x() << ' ' << p.z() << '\n';
-      f << '\n';  // a blank line ends one stick
-    }
+  std::ostringstream f;
+  for (std::size_t i = 0; i < walk.size(); i += every) {
+    const auto& q = side == model::Side::Left ? walk[i].q.left : walk[i].q.right;
+    const walking::LegPoints l = walking::leg_points(side, q, walk[i].s.waist);
+    for (const Eigen::Vector3d& p : {l.hip, l.knee, l.ankle}) f << p.x() << ' ' << p.z() << '\n';
+    f << '\n';  // a blank line ends one stick
   }
-  run_gnuplot_script(dir + "/" + stem + ".gp",
-                     terminal_line(dir + "/" + stem + ".png") + "set title '" + stem +
-                         ": hip, knee, ankle (Fig. 3.18)' noenhanced\nset xlabel 'x [m]'\n"
-                         "set ylabel 'z [m]'\nset size ratio -1\nplot '" +
-                         dat + "' with linespoints lw 1 pt 7 ps 0.3 notitle\n");
+  write_file(dat, f.str());
+  plot::run_gnuplot(dir + "/" + stem + ".gp",
+                    terminal_line(dir + "/" + stem + ".png") + "set title '" + stem +
+                        ": hip, knee, ankle (Fig. 3.18)' noenhanced\nset xlabel 'x [m]'\n"
+                        "set ylabel 'z [m]'\nset size ratio -1\nplot '" +
+                        dat + "' with linespoints lw 1 pt 7 ps 0.3 notitle\n",
+                    dir + "/" + stem + ".png");
 }
 
 void write_plots(const std::vector<Frame>& walk, const walking::PatternParameters& p,
@@ -189,12 +180,13 @@ void write_plots(const std::vector<Frame>& walk, const walking::PatternParameter
             "Fig. 3.16: waist, sagittal plane", "t [s]", "z [m]");
   line_plot("fig3_17_knees", "time", {{"LKneePitch", "left knee"}, {"RKneePitch", "right knee"}},
             "Fig. 3.17: knee pitch", "t [s]", "[rad]");
-  run_gnuplot_script(dir + "/fig3_14_waist_3d.gp",
-                     terminal_line(dir + "/fig3_14_waist_3d.png") +
-                         "set datafile separator ','\nset title 'Fig. 3.14: waist trajectory'\n"
-                         "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel 'z [m]'\n"
-                         "set ticslevel 0\nsplot '" +
-                         csv + "' skip 1 using 2:3:4 with lines lw 2 title 'waist'\n");
+  plot::run_gnuplot(dir + "/fig3_14_waist_3d.gp",
+                    terminal_line(dir + "/fig3_14_waist_3d.png") +
+                        "set datafile separator ','\nset title 'Fig. 3.14: waist trajectory'\n"
+                        "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel 'z [m]'\n"
+                        "set ticslevel 0\nsplot '" +
+                        csv + "' skip 1 using 2:3:4 with lines lw 2 title 'waist'\n",
+                    dir + "/fig3_14_waist_3d.png");
   const int every = std::max(1, static_cast<int>(walk.size() / 150));
   stick_diagram(walk, model::Side::Left, dir, "fig3_18_stick_left", every);
   stick_diagram(walk, model::Side::Right, dir, "fig3_18_stick_right", every);

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <map>
 #include <numbers>
@@ -26,6 +25,7 @@
 #include "console/cli/subcommand.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::cli {
@@ -267,9 +267,9 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
     else
       print_table(out, o, results);
     if (!csv.empty()) {
-      std::ofstream f(csv);
-      if (!f) throw Error("stride push-sweep: --csv: cannot write '" + csv + "'");
+      std::ostringstream f;
       write_csv(f, results);
+      write_file(csv, f.str());
     }
     return 0;
   } catch (const std::exception& e) {

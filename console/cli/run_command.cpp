@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <ostream>
 
@@ -17,6 +16,8 @@
 #include "console/ensemble/ensemble_report.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
+#include "robot/model/physical_limits.hpp"
 #include "simulator/render/snapshot.hpp"
 #include "simulator/render/views.hpp"
 #include "simulator/run_report.hpp"
@@ -47,7 +48,8 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     ArgumentReader a(args, "run");
     const std::string scene = a.positional("scene");
     const double seconds = a.number_or("--seconds", 10.0);
-    if (!(seconds >= 0)) throw Error("stride run: --seconds: expected a time >= 0");
+    if (const std::string p = limits::duration_problem(seconds); !p.empty())
+      throw Error("stride run: --seconds: " + p);
     if (a.has("--ensemble")) return run_ensemble(a, scene, seconds, out);
     const std::optional<std::uint64_t> seed =
         a.has("--seed") ? std::optional<std::uint64_t>(a.unsigned_integer("--seed")) : std::nullopt;
@@ -92,9 +94,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       out << "  one draw (seed " << sim.scene().physics.seed
           << "): `--ensemble N` gives the spread and fall count over perturbed starts\n";
     if (!report.empty()) {
-      std::ofstream f(report);
-      if (!f) throw Error("stride run: --report: cannot write '" + report + "'");
-      f << sim::run_report_json(sim, timing);
+      write_file(report, sim::run_report_json(sim, timing));
     }
     if (!snapshot.empty()) render::write_snapshot(renderer, sim, snapshot, view);
     if (recorder.active()) out << "video: " << recorder.frames() << " frames in " << video << "\n";

@@ -9,6 +9,7 @@
 #include "console/experiments/posture_tally.hpp"
 #include "console/experiments/walk_pool.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -109,83 +110,134 @@ void write_walk_figures(const ExperimentOptions& o, const WalkRecording& r, cons
       "x [m]", "y [m]", "lines");
 }
 
-int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
-  const int seeds = o.seeds > 0 ? o.seeds : 1;
-  const bool files = prepare_out_dir(o);
+namespace {
+
+// What a posture run collects: the summary CSV, the printed rows, the per-case tallies, and the
+// walks that failed (case, seed, reason).
+struct PostureRun {
   plot::Table summary{
       {"case",      "seed",        "steps",     "distance",        "fk_distance",
        "speed",     "step_length", "pitch_min", "pitch_max",       "roll_min",
        "roll_max",  "fell",        "foot_slip", "foot_slip_net_x", "foot_tilted_time",
        "foot_spin", "yaw_min",     "yaw_max",   "tipped",          "tipped_at"}};
   std::vector<std::vector<std::string>> rows;
+  std::vector<PostureTally> tallies = std::vector<PostureTally>(posture_cases().size());
+  std::vector<std::vector<std::string>> failures;
+};
+
+// One walk's files (trace, and figures for seed 1); throws stride::Error naming a file that
+// could not be written.
+void write_walk_files(const ExperimentOptions& o, const PostureCase& c, int seed,
+                      const WalkRecording& r) {
+  const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
+  plot::write_csv(o.out_dir + "/posture_" + c.scene + suffix + "_trace.csv", r.trace);
+  if (seed == 1)
+    write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
+                       c.scene.rfind("ankle", 0) == 0);
+}
+
+void add_walk_row(PostureRun& run, std::size_t k, int seed, const WalkRecording& r) {
+  const PostureCase& c = posture_cases()[k];
+  const WalkSummary s = summarize(r);
+  run.summary.add_row({double(k),
+                       double(seed),
+                       double(s.steps),
+                       s.distance,
+                       s.fk_distance,
+                       s.speed,
+                       s.step_length,
+                       s.pitch_min,
+                       s.pitch_max,
+                       s.roll_min,
+                       s.roll_max,
+                       s.fell ? 1.0 : 0.0,
+                       r.metrics.foot_slip,
+                       r.metrics.foot_slip_net_x,
+                       r.metrics.foot_tilted_time,
+                       r.metrics.foot_spin,
+                       r.metrics.yaw_min,
+                       r.metrics.yaw_max,
+                       double(static_cast<int>(s.tipped)),
+                       s.tipped_at});
+  add_walk(run.tallies[k], s);
+  const std::string tipped = s.tipped == sim::Tip::None ? "-"
+                                                        : std::string(sim::tip_name(s.tipped)) +
+                                                              " " + fixed(s.tipped_at, 2);
+  run.rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
+                      fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
+                      fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
+                      fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
+                      tipped, c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
+                      fixed(c.thesis_step, 4)});
+}
+
+// The failed walks, printed and (with --out) written as posture_failures.csv.
+void report_failures(const ExperimentOptions& o, const PostureRun& run, std::size_t walks,
+                     std::ostream& out) {
+  if (run.failures.empty()) return;
+  out << "\n" << run.failures.size() << " of " << walks << " walks failed:\n";
+  print_table(out, {"case", "seed", "reason"}, run.failures);
+  if (o.out_dir.empty()) return;
+  std::string csv = "case,seed,reason\n";
+  for (const auto& f : run.failures) {
+    std::string reason = f[2];
+    for (std::size_t q = reason.find('"'); q != std::string::npos; q = reason.find('"', q + 2))
+      reason.insert(q, 1, '"');
+    csv += f[0] + "," + f[1] + ",\"" + reason + "\"\n";
+  }
+  write_file(o.out_dir + "/posture_failures.csv", csv);
+}
+
+}  // namespace
+
+int run_posture_experiment(const ExperimentOptions& o, std::ostream& out) {
+  const int seeds = o.seeds > 0 ? o.seeds : 1;
+  const bool files = prepare_out_dir(o);
+  PostureRun run;
   const std::vector<std::size_t> picked = selected_posture_cases(o.cases);
-  std::vector<PostureTally> tallies(posture_cases().size());
   std::vector<WalkSetup> setups;
   for (std::size_t k : picked)
     for (int seed = 1; seed <= seeds; ++seed)
       setups.push_back(with_overrides(
           o, {scene_path(o, posture_cases()[k].scene), static_cast<std::uint64_t>(seed)}));
-  record_walks(setups, o.jobs, [&](std::size_t i, WalkRecording&& r) {
-    const std::size_t k = picked[i / seeds];  // the summary's case column keeps table indices
-    const int seed = static_cast<int>(i % seeds) + 1;
-    const PostureCase& c = posture_cases()[k];
-    const WalkSummary s = summarize(r);
-    summary.add_row({double(k),
-                     double(seed),
-                     double(s.steps),
-                     s.distance,
-                     s.fk_distance,
-                     s.speed,
-                     s.step_length,
-                     s.pitch_min,
-                     s.pitch_max,
-                     s.roll_min,
-                     s.roll_max,
-                     s.fell ? 1.0 : 0.0,
-                     r.metrics.foot_slip,
-                     r.metrics.foot_slip_net_x,
-                     r.metrics.foot_tilted_time,
-                     r.metrics.foot_spin,
-                     r.metrics.yaw_min,
-                     r.metrics.yaw_max,
-                     double(static_cast<int>(s.tipped)),
-                     s.tipped_at});
-    add_walk(tallies[k], s);
-    const std::string tipped = s.tipped == sim::Tip::None ? "-"
-                                                          : std::string(sim::tip_name(s.tipped)) +
-                                                                " " + fixed(s.tipped_at, 2);
-    rows.push_back({c.scene, std::to_string(seed), std::to_string(s.steps), fixed(s.distance, 4),
-                    fixed(s.fk_distance, 4), fixed(s.speed, 4), fixed(s.step_length, 4),
-                    fixed(s.pitch_min, 3) + ".." + fixed(s.pitch_max, 3),
-                    fixed(s.roll_min, 3) + ".." + fixed(s.roll_max, 3), s.fell ? "yes" : "no",
-                    tipped, c.figure, fixed(c.thesis_distance, 4), fixed(c.thesis_speed, 4),
-                    fixed(c.thesis_step, 4)});
-    if (files) {
-      const std::string suffix = seed == 1 ? "" : "_seed" + std::to_string(seed);
-      plot::write_csv(o.out_dir + "/posture_" + c.scene + suffix + "_trace.csv", r.trace);
-    }
-    if (files && seed == 1) {
-      write_walk_figures(o, r, "posture_" + c.scene, c.scene + " " + c.figure,
-                         c.scene.rfind("ankle", 0) == 0);
-    }
-    return true;
-  });
+  // A walk that fails (a bad scene, a diverging run, an output that cannot be written) is a
+  // failed row with its reason; the others go on.
+  const auto failed = [&](std::size_t i, const std::string& reason) {
+    run.failures.push_back(
+        {posture_cases()[picked[i / seeds]].scene, std::to_string(i % seeds + 1), reason});
+  };
+  record_walks(
+      setups, o.jobs,
+      [&](std::size_t i, WalkRecording&& r) {
+        const std::size_t k = picked[i / seeds];  // the summary's case column keeps table indices
+        const int seed = static_cast<int>(i % seeds) + 1;
+        try {
+          if (files) write_walk_files(o, posture_cases()[k], seed, r);
+        } catch (const Error& e) {
+          failed(i, e.what());
+          return true;
+        }
+        add_walk_row(run, k, seed, r);
+        return true;
+      },
+      failed);
   out << "Posture control on the uneven floor, 15 s walks (Sec. 4.3.4.2); distance = ground-truth "
          "feet midpoint, fk = the thesis' FK measure\n";
   print_table(out,
               {"case", "seed", "steps", "dist[m]", "fk[m]", "v[m/s]", "step[m]", "pitch[rad]",
                "roll[rad]", "fell", "past 0.4 rad [s]", "thesis", "dist[m]", "v[m/s]", "step[m]"},
-              rows);
+              run.rows);
   std::vector<std::vector<std::string>> tally_rows;
   for (std::size_t k : picked)
     tally_rows.push_back(
-        tally_row(posture_cases()[k].scene, tallies[k], posture_cases()[k].thesis_distance));
+        tally_row(posture_cases()[k].scene, run.tallies[k], posture_cases()[k].thesis_distance));
   out << "\nPer case: lost = fell or torso past " << sim::kTipAngle
       << " rad (first way: fwd/back/right/left); kept walks' mean distance (ground truth, FK) "
          "and largest |pitch|\n";
   print_table(out, tally_header(), tally_rows);
-  if (files) plot::write_csv(o.out_dir + "/posture_summary.csv", summary);
-  return 0;
+  if (files) plot::write_csv(o.out_dir + "/posture_summary.csv", run.summary);
+  report_failures(o, run, setups.size(), out);
+  return run.failures.empty() ? 0 : 1;
 }
 
 }  // namespace stride::experiments

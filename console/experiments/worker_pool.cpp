@@ -92,50 +92,95 @@ int default_jobs() {
   return n > 0 ? static_cast<int>(n) : 1;
 }
 
+namespace {
+
+// A worker for jobs first, first + stride, ...; its pipe's read end and pid.
+Worker spawn_worker(std::size_t n, const std::function<std::string(std::size_t)>& produce,
+                    std::size_t first, std::size_t stride, const Workers& pool) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw Error(std::string("experiment workers: pipe: ") + strerror(errno));
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw Error(std::string("experiment workers: fork: ") + strerror(errno));
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    for (const Worker& other : pool.list) ::close(other.fd);
+    work(fds[1], n, produce, first, stride);
+  }
+  ::close(fds[1]);
+  return {pid, fds[0]};
+}
+
+// Reads the next message from a worker; false if it ended without one.
+bool receive(const Worker& w, Kind& kind, std::string& bytes) {
+  std::uint64_t n = 0;
+  if (!read_all(w.fd, reinterpret_cast<char*>(&kind), 1) ||
+      !read_all(w.fd, reinterpret_cast<char*>(&n), sizeof n))
+    return false;
+  bytes.resize(n);
+  return read_all(w.fd, bytes.data(), n);
+}
+
+// How a worker that sent nothing more ended, for the failed job's reason.
+std::string worker_end(Worker& w) {
+  ::close(w.fd);
+  w.fd = -1;
+  int status = 0;
+  const pid_t done = ::waitpid(w.pid, &status, 0);
+  w.pid = -1;
+  if (done > 0 && WIFSIGNALED(status))
+    return "its worker process was killed by signal " + std::to_string(WTERMSIG(status));
+  return "its worker process ended without a result";
+}
+
+}  // namespace
+
 void run_in_workers(std::size_t n, int jobs, const std::function<std::string(std::size_t)>& produce,
                     const std::function<bool(std::size_t, std::string&&)>& use,
-                    const std::function<std::string(std::size_t)>& name) {
+                    const std::function<std::string(std::size_t)>& name, const Failed& failed) {
+  const auto fail = [&](std::size_t i, const std::string& reason) {
+    if (!failed) throw Error(reason);
+    failed(i, reason);
+  };
   const std::size_t workers = std::min<std::size_t>(jobs > 1 ? jobs : 1, n);
   if (workers <= 1) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (!use(i, produce(i))) return;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::string bytes;
+      try {
+        bytes = produce(i);
+      } catch (const std::exception& e) {  // Error, bad_alloc: the job fails, not the run
+        if (!failed) throw;
+        fail(i, e.what());
+        continue;
+      }
+      if (!use(i, std::move(bytes))) return;
+    }
     return;
   }
   std::cout.flush();
   std::cerr.flush();
   std::fflush(nullptr);  // a forked copy must not print the parent's buffered output again
   Workers pool;
-  for (std::size_t w = 0; w < workers; ++w) {
-    int fds[2];
-    if (::pipe(fds) != 0) throw Error(std::string("experiment workers: pipe: ") + strerror(errno));
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-      ::close(fds[0]);
-      ::close(fds[1]);
-      throw Error(std::string("experiment workers: fork: ") + strerror(errno));
-    }
-    if (pid == 0) {
-      ::close(fds[0]);
-      for (const Worker& other : pool.list) ::close(other.fd);
-      work(fds[1], n, produce, w, workers);
-    }
-    ::close(fds[1]);
-    pool.list.push_back({pid, fds[0]});
-  }
+  for (std::size_t w = 0; w < workers; ++w)
+    pool.list.push_back(spawn_worker(n, produce, w, workers, pool));
   for (std::size_t i = 0; i < n; ++i) {
-    const Worker& w = pool.list[i % workers];
+    Worker& w = pool.list[i % workers];
     Kind kind;
-    std::uint64_t n = 0;
     std::string bytes;
-    bool ok = read_all(w.fd, reinterpret_cast<char*>(&kind), 1) &&
-              read_all(w.fd, reinterpret_cast<char*>(&n), sizeof n);
-    if (ok) {
-      bytes.resize(n);
-      ok = read_all(w.fd, bytes.data(), n);
+    if (!receive(w, kind, bytes)) {
+      const std::string why = worker_end(w);
+      fail(i, "experiment: " + name(i) + ": " + why);
+      // A fresh worker takes over the jobs this one had still to do.
+      if (i + workers < n) w = spawn_worker(n, produce, i + workers, workers, pool);
+      continue;
     }
-    if (!ok)
-      throw Error("experiment: the worker process for " + name(i) + " ended without a result");
-    if (kind == Kind::Failure) throw Error(bytes);
+    if (kind == Kind::Failure) {
+      fail(i, bytes);
+      continue;
+    }
     if (!use(i, std::move(bytes))) return;
   }
 }

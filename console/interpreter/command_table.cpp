@@ -2,6 +2,7 @@
 
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
+#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 
@@ -29,7 +30,7 @@ void need_key(const std::string& key, bool framework_only) {
 }
 
 void check_run(const Words& a) {
-  if (!a.empty() && parse_number(a[0], "seconds") < 0) throw Error("seconds: expected >= 0");
+  if (!a.empty()) parse_seconds(a[0], "seconds");
 }
 void check_step(const Words& a) {
   if (!a.empty()) parse_integer(a[0], "frames", 1, 1000000000);
@@ -89,8 +90,8 @@ void check_log(const Words& a) {
 }
 void check_push(const Words& a) {
   const char* names[] = {"fx", "fy", "fz"};
-  for (int i = 0; i < 3; ++i) parse_number(a[i + 1], names[i]);
-  if (!(parse_number(a[4], "seconds") > 0)) throw Error("seconds: expected > 0");
+  for (int i = 0; i < 3; ++i) parse_bounded(a[i + 1], names[i], limits::kMaxForce, "N");
+  if (!(parse_seconds(a[4], "seconds") > 0)) throw Error("seconds: expected > 0");
 }
 void check_snapshot(const Words& a) {
   if (a[0].size() < 5 || a[0].substr(a[0].size() - 4) != ".png")
@@ -106,7 +107,8 @@ void check_video(const Words& a) {
 }
 void check_mv(const Words& a) {
   const char* names[] = {"x", "y", "z", "yaw"};
-  for (std::size_t i = 0; i < a.size(); ++i) parse_number(a[i], names[i]);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    parse_bounded(a[i], names[i], i < 3 ? limits::kMaxPosition : 1e3, i < 3 ? "m" : "rad");
 }
 void check_sn(const Words& a) {
   if (a[0] != "noise" && a[0] != "delay" && a[0] != "quantise")
@@ -124,7 +126,7 @@ void check_wait(const Words& a) {
   check_expect({a[1], a[2], a[3]});
   if (a.size() == 6) {
     if (a[4] != "timeout") throw Error("expected 'timeout', got '" + a[4] + "'");
-    if (!(parse_number(a[5], "timeout") > 0)) throw Error("timeout: expected > 0");
+    if (!(parse_seconds(a[5], "timeout") > 0)) throw Error("timeout: expected > 0");
   }
 }
 

@@ -2,13 +2,16 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <new>
 #include <ostream>
+#include <sstream>
 #include <thread>
 
 #include "console/interpreter/tokenizer.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/input_file.hpp"
+#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 
@@ -29,7 +32,12 @@ Interpreter::~Interpreter() {
 }
 
 void Interpreter::execute(std::string_view line) {
-  dispatch(parse_command(line));
+  const Command c = parse_command(line);
+  try {
+    dispatch(c);
+  } catch (const std::bad_alloc&) {  // a command asked for more than the machine has
+    throw Error(c.name + ": out of memory");
+  }
 }
 
 bool Interpreter::execute_reporting(std::string_view line) {
@@ -45,8 +53,8 @@ bool Interpreter::execute_reporting(std::string_view line) {
 void Interpreter::run_script(const std::string& path) {
   if (script_stack_.size() >= kMaxScriptDepth)
     throw Error("call: scripts nested deeper than " + std::to_string(kMaxScriptDepth));
-  std::ifstream in(path);
-  if (!in) throw Error("cannot read script '" + path + "'");
+  // A directory, device, FIFO or oversized file is refused before a byte is read.
+  std::istringstream in(read_input_file(path, kMaxScriptBytes, "script"));
   script_stack_.push_back(path);
   std::string line;
   int number = 0;
@@ -100,6 +108,8 @@ void Interpreter::load(const std::string& path) {
 std::uint64_t Interpreter::steps_for(double seconds) const {
   const double dt = target_.step_seconds();
   if (!(dt > 0)) throw Error("no scene loaded (use: load <scene.xml>)");
+  if (const std::string p = limits::duration_problem(seconds); !p.empty())
+    throw Error("seconds: " + p);
   return static_cast<std::uint64_t>(std::llround(seconds / dt));
 }
 

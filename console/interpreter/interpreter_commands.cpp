@@ -1,14 +1,13 @@
 // The commands of Interpreter that need more than one line: help, get, mr, dr, watch, plot, log,
 // report, expect, wait until.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <ostream>
 
 #include "console/interpreter/command_table.hpp"
 #include "console/interpreter/interpreter.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::console {
 
@@ -144,16 +143,12 @@ void Interpreter::log(const std::vector<std::string>& a) {
   } else if (what == "stop") {
     target_.log_stop();
   } else if (what == "load") {
-    out_ << a[1] << ": " << target_.log_load(resolve(a[1])) << " frames\n";
+    out_ << a[1] << ": " << target_.log_load(resolve(a[1])) << "\n";
     log_path_ = resolve(a[1]);
   } else if (what == "save") {
     // Logs are flushed every frame, so a copy holds every complete frame even while recording.
     if (log_path_.empty()) throw Error("log save: no log recorded or loaded yet");
-    std::error_code ec;
-    std::filesystem::copy_file(log_path_, a[1], std::filesystem::copy_options::overwrite_existing,
-                               ec);
-    if (ec)
-      throw Error("log save: cannot copy '" + log_path_ + "' to '" + a[1] + "': " + ec.message());
+    copy_file_checked(log_path_, a[1]);
     out_ << "saved " << log_path_ << " as " << a[1] << "\n";
   } else if (what == "goto") {
     const auto skipped = target_.log_goto(
@@ -167,7 +162,9 @@ void Interpreter::log(const std::vector<std::string>& a) {
   } else if (what == "replay") {
     const ReplaySummary r = target_.log_replay();
     out_ << "replayed " << r.frames << " frames, compared " << r.compared
-         << " representations: " << r.mismatch_count << " mismatch(es)\n";
+         << " representations: " << r.mismatch_count << " mismatch(es)";
+    if (r.stopped) out_ << " (stopped before damaged frame " << r.stopped_at << ")";
+    out_ << "\n";
     for (const auto& m : r.mismatches) out_ << "  " << m << "\n";
   }
 }
@@ -177,10 +174,7 @@ void Interpreter::report(const std::vector<std::string>& a) {
     out_ << target_.report_text();
     return;
   }
-  const std::string json = target_.report_json();
-  std::ofstream f(a[0]);
-  if (!f) throw Error("report: cannot write '" + a[0] + "'");
-  f << json;
+  write_file(a[0], target_.report_json());
   out_ << "wrote " << a[0] << "\n";
 }
 

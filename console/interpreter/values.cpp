@@ -2,8 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 
 #include "robot/core/error.hpp"
+#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 
@@ -31,6 +33,23 @@ double parse_number(std::string_view word, const std::string& what) {
   double v;
   if (!read_double(word, v))
     throw Error(what + ": expected a number, got '" + std::string(word) + "'");
+  return v;
+}
+
+double parse_bounded(std::string_view word, const std::string& what, double bound,
+                     const std::string& unit) {
+  const double v = parse_number(word, what);
+  if (std::abs(v) > bound) {
+    std::ostringstream msg;
+    msg << what << ": " << v << " " << unit << " outside [" << -bound << ", " << bound << "]";
+    throw Error(msg.str());
+  }
+  return v;
+}
+
+double parse_seconds(std::string_view word, const std::string& what) {
+  const double v = parse_number(word, what);
+  if (const std::string p = limits::duration_problem(v); !p.empty()) throw Error(what + ": " + p);
   return v;
 }
 

@@ -7,6 +7,11 @@ namespace stride::console {
 
 // A finite number, the whole word; else stride::Error "<what>: expected a number, got 'x'".
 double parse_number(std::string_view word, const std::string& what);
+// A number with |v| <= bound: "fx: 1e+308 N outside [-1e+07, 1e+07]" otherwise.
+double parse_bounded(std::string_view word, const std::string& what, double bound,
+                     const std::string& unit);
+// A duration in [0, limits::kMaxDuration] seconds.
+double parse_seconds(std::string_view word, const std::string& what);
 // An integer in [low, high].
 long long parse_integer(std::string_view word, const std::string& what, long long low,
                         long long high);

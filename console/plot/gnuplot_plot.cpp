@@ -7,7 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "console/system/child_process.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::plot {
 
@@ -16,13 +18,6 @@ namespace {
 std::string quoted(std::string_view s) {
   std::string r = "'";
   for (char c : s) r += c == '\'' ? std::string("''") : std::string(1, c);
-  return r + "'";
-}
-
-// Shell single-quoted word, for the file names handed to gnuplot.
-std::string shell_quoted(std::string_view s) {
-  std::string r = "'";
-  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return r + "'";
 }
 
@@ -53,10 +48,9 @@ void Table::add_row(std::vector<double> row) {
 }
 
 void write_csv(const std::string& path, const Table& table) {
-  std::ofstream out(path);
-  if (!out) throw Error("plot: cannot write CSV '" + path + "'");
-  for (std::size_t i = 0; i < table.columns.size(); ++i) out << (i ? "," : "") << table.columns[i];
-  out << "\n";
+  std::string out;
+  for (std::size_t i = 0; i < table.columns.size(); ++i) out += (i ? "," : "") + table.columns[i];
+  out += "\n";
   char buf[32];
   for (const auto& row : table.rows) {
     for (std::size_t i = 0; i < row.size(); ++i) {
@@ -64,11 +58,12 @@ void write_csv(const std::string& path, const Table& table) {
         std::snprintf(buf, sizeof buf, "%.10g", row[i]);
       else
         std::snprintf(buf, sizeof buf, "NaN");
-      out << (i ? "," : "") << buf;
+      if (i) out += ',';
+      out += buf;
     }
-    out << "\n";
+    out += "\n";
   }
-  if (!out) throw Error("plot: write to '" + path + "' failed");
+  write_file(path, out);
 }
 
 std::string png_terminal() {
@@ -112,6 +107,23 @@ std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>&
   return s.str();
 }
 
+void run_gnuplot(const std::string& gp_path, const std::string& script,
+                 const std::string& png_path) {
+  write_file(gp_path, script);  // kept beside the picture, to be tweaked and rerun by hand
+  // gnuplot draws to its standard output, so the PNG reaches disk through the checked writer.
+  std::string to_stdout;
+  std::istringstream lines(script);
+  for (std::string line; std::getline(lines, line);)
+    to_stdout += (line.starts_with("set output ") ? std::string("set output") : line) + "\n";
+  const console::ChildResult r = console::run_child({"gnuplot"}, to_stdout);
+  if (r.exit_status != 0 || !r.out.starts_with("\x89PNG")) {
+    std::string why = r.err.empty() ? "no PNG produced" : r.err;
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    throw Error("plot: gnuplot failed on " + gp_path + ": " + why);
+  }
+  write_file(png_path, r.out);
+}
+
 void render_png(const PlotSpec& spec) {
   const std::string terminal = png_terminal();
   if (terminal.empty())
@@ -121,21 +133,7 @@ void render_png(const PlotSpec& spec) {
   if (gp_path.size() > 4 && gp_path.substr(gp_path.size() - 4) == ".png")
     gp_path.resize(gp_path.size() - 4);
   gp_path += ".gp";
-  {
-    std::ofstream out(gp_path);
-    if (!out) throw Error("plot: cannot write gnuplot script '" + gp_path + "'");
-    out << script;
-  }
-  const std::string cmd = "gnuplot " + shell_quoted(gp_path) + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) throw Error("plot: cannot start gnuplot");
-  std::string output;
-  char buf[256];
-  while (std::fgets(buf, sizeof buf, pipe)) output += buf;
-  if (pclose(pipe) != 0) {
-    std::replace(output.begin(), output.end(), '\n', ' ');
-    throw Error("plot: gnuplot failed on " + gp_path + ": " + output);
-  }
+  run_gnuplot(gp_path, script, spec.png_path);
 }
 
 }  // namespace stride::plot

@@ -58,7 +58,13 @@ std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>&
                            std::string_view terminal);
 
 // Reads the CSV header, writes <png without .png>.gp and runs gnuplot on it. Throws
-// stride::Error when gnuplot is missing, a column is unknown, or gnuplot fails.
+// stride::Error when gnuplot is missing, a column is unknown, gnuplot fails or a file cannot be
+// written.
 void render_png(const PlotSpec& spec);
+
+// Any gnuplot script whose `set output '<png_path>'` line names the picture: saved as gp_path,
+// run with gnuplot drawing to its standard output, and the PNG written with every write checked.
+void run_gnuplot(const std::string& gp_path, const std::string& script,
+                 const std::string& png_path);
 
 }  // namespace stride::plot

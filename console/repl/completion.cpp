@@ -35,7 +35,8 @@ const std::vector<std::string> kSimKeys = {
     "sim.time",        "sim.steps",     "sim.hash",      "robot.name",       "robot.fell",
     "robot.torso.x",   "robot.torso.y", "robot.torso.z", "robot.torso.roll", "robot.torso.pitch",
     "robot.torso.yaw", "robot.com.x",   "robot.com.y",   "robot.com.z",      "log.frames",
-    "log.mismatches",  "log.compared",  "log.replayed"};
+    "log.complete",    "log.damaged",   "log.truncated", "log.mismatches",   "log.compared",
+    "log.replayed"};
 
 std::vector<std::string> field_names(const std::string& key, Target& target) {
   return safely([&] {

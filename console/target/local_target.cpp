@@ -1,10 +1,10 @@
 #include "console/target/local_target.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 #include "robot/runtime/replay.hpp"
 #include "simulator/run_report.hpp"
 #include "simulator/teleport.hpp"
@@ -105,9 +105,14 @@ std::string LocalTarget::sim_value(const std::string& key) {
     const std::string by = runtime().provider_of(rep);
     return by.empty() ? "(built-in)" : by;
   }
-  if (key == "log.frames") {
-    if (!log_) throw Error("log.frames: no log loaded (log load <file>)");
-    return std::to_string(log_->frame_count());
+  if (key == "log.frames" || key == "log.complete" || key == "log.damaged" ||
+      key == "log.truncated") {
+    if (!log_) throw Error(key + ": no log loaded (log load <file>)");
+    const LogIntegrity& i = log_->integrity();
+    return std::to_string(key == "log.frames"     ? log_->frame_count()
+                          : key == "log.complete" ? i.complete
+                          : key == "log.damaged"  ? i.damaged
+                                                  : i.truncated);
   }
   if (key == "log.mismatches" || key == "log.compared" || key == "log.replayed") {
     if (!replay_) throw Error(key + ": no replay yet (log replay)");
@@ -132,9 +137,10 @@ std::string LocalTarget::sim_value(const std::string& key) {
   if (key == "robot.com.x") return number_text(com.x());
   if (key == "robot.com.y") return number_text(com.y());
   if (key == "robot.com.z") return number_text(com.z());
-  throw Error("unknown key '" + key +
-              "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
-              "robot.com.x|y|z, log.frames|mismatches|compared|replayed)");
+  throw Error(
+      "unknown key '" + key +
+      "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
+      "robot.com.x|y|z, log.frames|complete|damaged|truncated|mismatches|compared|replayed)");
 }
 
 std::string LocalTarget::get(const std::string& key) {
@@ -190,18 +196,19 @@ void LocalTarget::log_stop() {
   rt.stop_log();
 }
 
-std::size_t LocalTarget::log_load(const std::string& path) {
+std::string LocalTarget::log_load(const std::string& path) {
   auto fresh = std::make_unique<LogReader>(path);
   log_ = std::move(fresh);
   replay_.reset();
-  return log_->frame_count();
+  return log_->summary();
 }
 
 std::vector<std::string> LocalTarget::log_goto(std::size_t frame) {
   if (!log_) throw Error("no log loaded (log load <file>)");
   if (frame >= log_->frame_count())
-    throw Error("frame " + std::to_string(frame) + " is outside the log's 0.." +
-                std::to_string(log_->frame_count() - 1));
+    throw Error("frame " + std::to_string(frame) + " is outside the log's " +
+                (log_->frame_count() ? "0.." + std::to_string(log_->frame_count() - 1)
+                                     : std::string("frames (it has none)")));
   return runtime().load_frame(*log_, frame);
 }
 
@@ -209,9 +216,7 @@ void LocalTarget::log_export(const std::string& csv_path, const std::vector<std:
   if (!log_) throw Error("no log loaded (log load <file>)");
   std::ostringstream csv;
   export_csv(*log_, keys, csv);  // may throw on a bad key; nothing written then
-  std::ofstream f(csv_path);
-  if (!f) throw Error("cannot write '" + csv_path + "'");
-  f << csv.str();
+  write_file(csv_path, csv.str());
 }
 
 ReplaySummary LocalTarget::log_replay() {
@@ -225,6 +230,8 @@ ReplaySummary LocalTarget::log_replay() {
   s.frames = r.frames;
   s.compared = r.compared.size();
   s.mismatch_count = r.mismatches.size();
+  s.stopped = r.stopped_before_damaged;
+  s.stopped_at = log_->readable_prefix();
   for (std::size_t i = 0; i < r.mismatches.size() && i < 5; ++i)
     s.mismatches.push_back("frame " + std::to_string(r.mismatches[i].frame) + ": " +
                            r.mismatches[i].representation);

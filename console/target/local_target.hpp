@@ -42,7 +42,7 @@ class LocalTarget final : public Target {
 
   void log_start(const std::string& path) override;
   void log_stop() override;
-  std::size_t log_load(const std::string& path) override;
+  std::string log_load(const std::string& path) override;
   std::vector<std::string> log_goto(std::size_t frame) override;
   void log_export(const std::string& csv_path, const std::vector<std::string>& keys) override;
   ReplaySummary log_replay() override;

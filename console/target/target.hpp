@@ -17,6 +17,8 @@ struct ReplaySummary {
   std::size_t compared = 0;             // representations compared every frame
   std::vector<std::string> mismatches;  // "frame N: Rep", first few
   std::size_t mismatch_count = 0;
+  std::size_t stopped_at = 0;  // first damaged frame, where the replay stopped (0: none)
+  bool stopped = false;
 };
 
 class Target {
@@ -40,8 +42,8 @@ class Target {
   virtual void select_robot(const std::string& name) = 0;
 
   // Values: representation:X[.path], module:X[.path], sim.time, sim.steps, sim.hash,
-  // robot.torso.{x,y,z,roll,pitch,yaw}, robot.fell, robot.com.{x,y,z}, log.frames, log.mismatches,
-  // provider:<Rep>.
+  // robot.torso.{x,y,z,roll,pitch,yaw}, robot.fell, robot.com.{x,y,z},
+  // log.frames|complete|damaged|truncated, log.mismatches, provider:<Rep>.
   virtual std::string get(const std::string& key) = 0;
   virtual const TypeDesc& type_of(const std::string& key) = 0;
   virtual void set(const std::string& key, const std::string& fields) = 0;
@@ -56,7 +58,8 @@ class Target {
 
   virtual void log_start(const std::string& path) = 0;
   virtual void log_stop() = 0;
-  virtual std::size_t log_load(const std::string& path) = 0;  // frames in the log
+  // Loads a log; returns its summary line ("N frames: C complete, D damaged (...), T truncated").
+  virtual std::string log_load(const std::string& path) = 0;
   // Puts a loaded log frame onto the blackboard; returns the representations skipped.
   virtual std::vector<std::string> log_goto(std::size_t frame) = 0;
   virtual void log_export(const std::string& csv_path, const std::vector<std::string>& keys) = 0;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 
 namespace stride {
 
@@ -121,6 +122,57 @@ Eigen::Vector2d XmlElement::vector2_or(const char* attr, const Eigen::Vector2d& 
     } catch (const std::invalid_argument& ex) {
       fail_attr(attr, ex.what());
     }
+  return v;
+}
+
+namespace {
+const char* si_unit(Dimension d) {
+  switch (d) {
+    case Dimension::Length:
+      return " m";
+    case Dimension::Angle:
+      return " rad";
+    case Dimension::Mass:
+      return " kg";
+    case Dimension::Time:
+      return " s";
+    case Dimension::Force:
+      return " N";
+    case Dimension::Frequency:
+      return " Hz";
+    case Dimension::None:
+      break;
+  }
+  return "";
+}
+}  // namespace
+
+void XmlElement::check_within(const char* attr, double v, double lo, double hi, Dimension d) const {
+  if (!(v >= lo && v <= hi))
+    fail_attr(attr, short_number(v) + si_unit(d) + " outside [" + short_number(lo) + ", " +
+                        short_number(hi) + "]");
+}
+
+double XmlElement::number_within(const char* attr, double fallback, double lo, double hi,
+                                 Dimension d) const {
+  const double v = number_or(attr, fallback, d);
+  if (has(attr)) check_within(attr, v, lo, hi, d);
+  return v;
+}
+
+Eigen::Vector3d XmlElement::vector3_within(const char* attr, const Eigen::Vector3d& fallback,
+                                           double bound, Dimension d) const {
+  const Eigen::Vector3d v = vector3_or(attr, fallback, d);
+  if (has(attr))
+    for (int i = 0; i < 3; ++i) check_within(attr, v[i], -bound, bound, d);
+  return v;
+}
+
+Eigen::Vector2d XmlElement::vector2_within(const char* attr, const Eigen::Vector2d& fallback,
+                                           double bound, Dimension d) const {
+  const Eigen::Vector2d v = vector2_or(attr, fallback, d);
+  if (has(attr))
+    for (int i = 0; i < 2; ++i) check_within(attr, v[i], -bound, bound, d);
   return v;
 }
 

@@ -42,6 +42,16 @@ class XmlElement {
                              Dimension d = Dimension::None) const;
   Eigen::Vector2d vector2_or(const char* attr, const Eigen::Vector2d& fallback,
                              Dimension d = Dimension::None) const;
+  // The same, each value also within [lo, hi] (in SI units after conversion); a value outside
+  // is an error naming it and the range, e.g. "attribute 'xyz': 1e+300 m outside [-1e4, 1e4]".
+  double number_within(const char* attr, double fallback, double lo, double hi,
+                       Dimension d = Dimension::None) const;
+  Eigen::Vector3d vector3_within(const char* attr, const Eigen::Vector3d& fallback, double bound,
+                                 Dimension d = Dimension::None) const;
+  Eigen::Vector2d vector2_within(const char* attr, const Eigen::Vector2d& fallback, double bound,
+                                 Dimension d = Dimension::None) const;
+  // Fails unless lo <= v <= hi, naming `attr`, v and the range.
+  void check_within(const char* attr, double v, double lo, double hi, Dimension d) const;
   // One of `choices`, returned as its index.
   int choice_or(const char* attr, std::initializer_list<std::string_view> choices,
                 int fallback) const;

@@ -36,9 +36,9 @@ class Slot {
     return print_value(*d, *sub);
   }
   // Whole or partial text update, all or nothing; errors start with `root`.
-  void update(std::string_view text, std::string_view root) {
+  void update(std::string_view text, std::string_view root, Numbers numbers = Numbers::Any) {
     auto v = value();
-    update_value(desc(), v, text, root);
+    update_value(desc(), v, text, root, numbers);
     std::string bytes;
     ByteWriter w(bytes);
     write_value(desc(), v, w);

@@ -172,7 +172,8 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
 
 class Parser {
  public:
-  Parser(std::string_view text, std::string_view root) : s_(text), root_(root) {}
+  Parser(std::string_view text, std::string_view root, Numbers numbers)
+      : s_(text), root_(root), numbers_(numbers) {}
 
   void skip_space() {
     while (pos_ < s_.size() &&
@@ -234,6 +235,7 @@ class Parser {
   }
   std::string_view s_;
   std::string root_;
+  Numbers numbers_;
   std::size_t pos_ = 0;
 };
 
@@ -258,6 +260,9 @@ void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
       if (w.empty() || res.ec != std::errc() || res.ptr != w.data() + w.size())
         fail_at(where, w, "a number");
       if (d.kind == Kind::Float) x = static_cast<float>(x);
+      // NaN or infinity in a representation only spreads through the controllers (parameters
+      // may use NaN to mean "from the preset").
+      if (numbers_ == Numbers::Finite && !std::isfinite(x)) fail_at(where, w, "a finite number");
       check_range(where, x, w, range);
       v.data = x;
       return;
@@ -451,9 +456,10 @@ std::string print_value(const TypeDesc& d, const Value& v) {
   return out;
 }
 
-void update_value(const TypeDesc& d, Value& v, std::string_view text, std::string_view root_name) {
+void update_value(const TypeDesc& d, Value& v, std::string_view text, std::string_view root_name,
+                  Numbers numbers) {
   Value copy = v;
-  Parser p(text, root_name);
+  Parser p(text, root_name, numbers);
   const std::string root(root_name);
   if (p.at_end()) throw Error(root + ": expected field=value or a whole value, got nothing");
   if (d.kind != Kind::Struct || p.peek('{')) {

@@ -26,8 +26,11 @@ std::string print_value(const TypeDesc& d, const Value& v);
 
 // Applies `text` to `v`: either a whole value ("{...}") or updates "path=value path=value ..."
 // with paths like position[3], cop.x, gains.kp. All or nothing: on error `v` is unchanged and the
-// one-line message names `root_name.path` and what was expected.
-void update_value(const TypeDesc& d, Value& v, std::string_view text, std::string_view root_name);
+// one-line message names `root_name.path` and what was expected. Numbers::Finite refuses nan and
+// inf (and a float beyond its range) as representations need; parameters may hold NaN.
+enum class Numbers { Any, Finite };
+void update_value(const TypeDesc& d, Value& v, std::string_view text, std::string_view root_name,
+                  Numbers numbers = Numbers::Any);
 
 // The sub-description and sub-value at `path` ("" = the whole value); throws naming the path.
 std::pair<const TypeDesc*, const Value*> value_at(const TypeDesc& d, const Value& v,

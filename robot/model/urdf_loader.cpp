@@ -1,15 +1,13 @@
 #include "robot/model/urdf_loader.hpp"
 
-#include <fstream>
-#include <functional>
 #include <map>
-#include <sstream>
 
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/input_file.hpp"
 #include "robot/model/urdf_validation.hpp"
 
 namespace stride::model {
@@ -76,6 +74,57 @@ JointType to_type(int t) {
   }
 }
 
+Joint to_joint(const urdf::Joint& j, int parent_link) {
+  Joint joint;
+  joint.name = j.name;
+  joint.type = to_type(j.type);
+  joint.parent_link = parent_link;
+  joint.origin = to_isometry(j.parent_to_joint_origin_transform);
+  joint.axis = Eigen::Vector3d(j.axis.x, j.axis.y, j.axis.z).normalized();  // validated non-zero
+  if (j.limits) {
+    joint.lower = j.limits->lower;
+    joint.upper = j.limits->upper;
+    joint.effort = j.limits->effort;
+    joint.velocity = j.limits->velocity;
+  }
+  return joint;
+}
+
+int add_link(const urdf::Link& l, int parent_joint, RobotModel& model) {
+  Link link;
+  link.name = l.name;
+  link.inertial = to_inertial(l.inertial);
+  for (const auto& c : l.collision_array) link.collisions.push_back(to_shape(*c));
+  if (l.collision_array.empty() && l.collision) link.collisions.push_back(to_shape(*l.collision));
+  link.parent_joint = parent_joint;
+  const int id = static_cast<int>(model.links.size());
+  model.links.push_back(std::move(link));
+  if (parent_joint >= 0) model.joints[parent_joint].child_link = id;
+  return id;
+}
+
+// Depth first from the root, so every joint follows its parent link; an explicit stack (child
+// joints pushed in reverse) gives the order a recursive walk would, without its depth.
+void add_tree(const urdf::ModelInterface& urdf, RobotModel& model) {
+  std::vector<std::pair<urdf::JointConstSharedPtr, int>> stack;  // joint, its parent link
+  const auto push_children = [&](const urdf::Link& l, int id) {
+    for (auto it = l.child_joints.rbegin(); it != l.child_joints.rend(); ++it)
+      stack.emplace_back(*it, id);
+  };
+  const urdf::LinkConstSharedPtr root = urdf.getRoot();
+  push_children(*root, add_link(*root, -1, model));
+  model.root_link = 0;
+  while (!stack.empty()) {
+    const auto [j, parent] = stack.back();
+    stack.pop_back();
+    const int jid = static_cast<int>(model.joints.size());
+    model.joints.push_back(to_joint(*j, parent));
+    model.links[parent].child_joints.push_back(jid);
+    const urdf::LinkConstSharedPtr child = urdf.getLink(j->child_link_name);
+    push_children(*child, add_link(*child, jid, model));
+  }
+}
+
 }  // namespace
 
 RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
@@ -90,53 +139,11 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
   RobotModel model;
   model.name = urdf->getName();
   model.source = source_name;
-  std::map<std::string, int> link_ids;
-  // Depth-first from the root so every joint follows its parent link.
-  std::function<void(const urdf::LinkConstSharedPtr&, int)> visit =
-      [&](const urdf::LinkConstSharedPtr& l, int parent_joint) {
-        Link link;
-        link.name = l->name;
-        link.inertial = to_inertial(l->inertial);
-        for (const auto& c : l->collision_array) link.collisions.push_back(to_shape(*c));
-        if (l->collision_array.empty() && l->collision)
-          link.collisions.push_back(to_shape(*l->collision));
-        link.parent_joint = parent_joint;
-        const int id = static_cast<int>(model.links.size());
-        link_ids[l->name] = id;
-        model.links.push_back(std::move(link));
-        if (parent_joint >= 0) model.joints[parent_joint].child_link = id;
-        for (const auto& j : l->child_joints) {
-          Joint joint;
-          joint.name = j->name;
-          joint.type = to_type(j->type);
-          joint.parent_link = id;
-          joint.origin = to_isometry(j->parent_to_joint_origin_transform);
-          Eigen::Vector3d axis(j->axis.x, j->axis.y, j->axis.z);
-          joint.axis =
-              axis.norm() > 0 ? Eigen::Vector3d(axis.normalized()) : Eigen::Vector3d::UnitX();
-          if (j->limits) {
-            joint.lower = j->limits->lower;
-            joint.upper = j->limits->upper;
-            joint.effort = j->limits->effort;
-            joint.velocity = j->limits->velocity;
-          }
-          const int jid = static_cast<int>(model.joints.size());
-          model.joints.push_back(joint);
-          model.links[id].child_joints.push_back(jid);
-          visit(urdf->getLink(j->child_link_name), jid);
-        }
-      };
-  visit(urdf->getRoot(), -1);
-  model.root_link = 0;
-
+  add_tree(*urdf, model);
   for (auto& joint : model.joints) {  // resolve mimic names once every joint exists
     urdf::JointConstSharedPtr j = urdf->getJoint(joint.name);
-    if (j && j->mimic) {
+    if (j && j->mimic) {  // validated: a movable joint that mimics none
       joint.mimic_of = model.joint_index(j->mimic->joint_name);
-      if (joint.mimic_of < 0)
-        throw error_at(
-            source_name, 1,
-            "joint '" + joint.name + "' mimics unknown joint '" + j->mimic->joint_name + "'");
       joint.mimic_multiplier = j->mimic->multiplier;
       joint.mimic_offset = j->mimic->offset;
     }
@@ -146,11 +153,7 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
 
 RobotModel load_urdf(const std::string& given) {
   const std::string path = find_input(given);  // a shipped robot from any working directory
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open URDF file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_urdf(ss.str(), path);
+  return parse_urdf(read_input_file(path, kMaxTextInputBytes, "URDF file"), path);
 }
 
 }  // namespace stride::model

@@ -4,11 +4,16 @@
 #include <cstdlib>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 #include <tinyxml2.h>
 
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/xml_error.hpp"
+#include "robot/model/inertia_check.hpp"
+#include "robot/model/physical_limits.hpp"
+#include "robot/model/urdf_tree_check.hpp"
 
 namespace stride::model {
 namespace {
@@ -22,25 +27,56 @@ struct Checker {
     throw error_at(source, e ? e->GetLineNum() : 0, msg);
   }
 
-  // Every number in the attribute must parse and be finite.
-  void check_numbers(const XMLElement* e, const char* attr, const std::string& what) const {
+  // The attribute's numbers; each must parse and be finite.
+  std::vector<double> numbers(const XMLElement* e, const char* attr,
+                              const std::string& what) const {
+    std::vector<double> out;
     const char* text = e->Attribute(attr);
-    if (!text) return;
+    if (!text) return out;
     std::istringstream in(text);
     std::string tok;
     while (in >> tok) {
       char* end = nullptr;
-      double v = std::strtod(tok.c_str(), &end);
+      const double v = std::strtod(tok.c_str(), &end);
       if (end == tok.c_str() || *end != '\0' || !std::isfinite(v))
         fail(e, what + ": attribute '" + attr + "' = '" + text + "' (expected finite numbers)");
+      out.push_back(v);
     }
+    return out;
+  }
+
+  // Exactly `count` numbers (when the attribute is present), each with |v| <= `bound`.
+  std::vector<double> bounded(const XMLElement* e, const char* attr, const std::string& what,
+                              std::size_t count, double bound, const char* unit) const {
+    const auto v = numbers(e, attr, what);
+    if (!e->Attribute(attr)) return v;
+    if (v.size() != count)
+      fail(e, what + ": attribute '" + attr + "' = '" + e->Attribute(attr) + "' (expected " +
+                  std::to_string(count) + (count == 1 ? " number)" : " numbers)"));
+    for (double x : v)
+      if (std::abs(x) > bound)
+        fail(e, what + ": " + attr + " " + short_number(x) + (*unit ? " " : "") + unit +
+                    " outside [-" + short_number(bound) + ", " + short_number(bound) + "]");
+    return v;
   }
 
   double required_number(const XMLElement* e, const char* attr, const std::string& what) const {
-    const char* text = e->Attribute(attr);
-    if (!text) fail(e, what + ": missing attribute '" + std::string(attr) + "'");
-    check_numbers(e, attr, what);
-    return std::strtod(text, nullptr);
+    if (!e->Attribute(attr)) fail(e, what + ": missing attribute '" + std::string(attr) + "'");
+    const auto v = numbers(e, attr, what);
+    if (v.size() != 1)
+      fail(e, what + ": attribute '" + attr + "' = '" + e->Attribute(attr) +
+                  "' (expected one number)");
+    return v[0];
+  }
+
+  // A required number in [lo, hi], named with its unit when it is not.
+  double in_range(const XMLElement* e, const char* attr, const std::string& what, double lo,
+                  double hi, const char* unit) const {
+    const double v = required_number(e, attr, what);
+    if (!(v >= lo && v <= hi))
+      fail(e, what + ": " + attr + " " + short_number(v) + " " + unit + " outside [" +
+                  short_number(lo) + ", " + short_number(hi) + "]");
+    return v;
   }
 
   void check_all_numbers(const XMLElement* e, const std::string& what) const {
@@ -48,56 +84,114 @@ struct Checker {
         "xyz",    "rpy",      "value",      "size",   "radius",  "length",  "ixx",
         "ixy",    "ixz",      "iyy",        "iyz",    "izz",     "lower",   "upper",
         "effort", "velocity", "multiplier", "offset", "damping", "friction"};
-    for (const char* a : kNumeric) check_numbers(e, a, what);
+    for (const char* a : kNumeric) numbers(e, a, what);
     for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
       check_all_numbers(c, what);
   }
 
-  void check_link(const XMLElement* link) const {
+  void check_origin(const XMLElement* parent, const std::string& what) const {
+    if (const XMLElement* o = parent->FirstChildElement("origin")) {
+      bounded(o, "xyz", what + " origin", 3, limits::kMaxLength, "m");
+      bounded(o, "rpy", what + " origin", 3, 1e3, "rad");
+    }
+  }
+
+  void check_inertial(const XMLElement* inertial, const std::string& what) const {
+    const XMLElement* mass = inertial->FirstChildElement("mass");
+    if (!mass) fail(inertial, what + ": <inertial> without <mass>");
+    in_range(mass, "value", what + " mass", 0, limits::kMaxMass, "kg");
+    check_origin(inertial, what + " inertial");
+    const XMLElement* in = inertial->FirstChildElement("inertia");
+    if (!in) return;
+    double v[6];
+    const char* names[] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
+    for (int k = 0; k < 6; ++k) v[k] = required_number(in, names[k], what + " inertia");
+    Eigen::Matrix3d i;
+    i << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
+    if (const std::string problem = inertia_problem(i); !problem.empty())
+      fail(in, what + ": inertia " + problem);
+  }
+
+  void check_shape(const XMLElement* shape, const std::string& what) const {
+    const std::string_view kind = shape->Name();
+    const auto length = [&](const char* attr) {
+      in_range(shape, attr, what + " " + std::string(kind), limits::kMinLength, limits::kMaxLength,
+               "m");
+    };
+    if (kind == "mesh")
+      fail(shape,
+           what + ": mesh collision geometry is not supported (expected box, cylinder or sphere)");
+    if (kind == "box") {
+      if (!shape->Attribute("size")) fail(shape, what + " box: missing attribute 'size'");
+      const auto size = numbers(shape, "size", what + " box");
+      if (size.size() != 3)
+        fail(shape,
+             what + " box: size '" + shape->Attribute("size") + "' (expected three lengths)");
+      for (double s : size)
+        if (!(s >= limits::kMinLength && s <= limits::kMaxLength))
+          fail(shape, what + " box: size " + short_number(s) + " m outside [" +
+                          short_number(limits::kMinLength) + ", " +
+                          short_number(limits::kMaxLength) + "]");
+    } else if (kind == "sphere") {
+      length("radius");
+    } else if (kind == "cylinder") {
+      length("radius");
+      length("length");
+    } else {
+      fail(shape, what + ": unknown geometry <" + std::string(kind) +
+                      "> (expected box, cylinder or sphere)");
+    }
+  }
+
+  UrdfLinkRecord check_link(const XMLElement* link) const {
     const char* name = link->Attribute("name");
     if (!name) fail(link, "<link> without a name");
     const std::string what = std::string("link '") + name + "'";
     check_all_numbers(link, what);
-    if (const XMLElement* inertial = link->FirstChildElement("inertial")) {
-      const XMLElement* mass = inertial->FirstChildElement("mass");
-      if (!mass) fail(inertial, what + ": <inertial> without <mass>");
-      double m = required_number(mass, "value", what + " mass");
-      if (m < 0)
-        fail(mass, what + ": negative mass " + mass->Attribute("value") + " (expected >= 0 kg)");
-      if (const XMLElement* in = inertial->FirstChildElement("inertia")) {
-        for (const char* d : {"ixx", "iyy", "izz"})
-          if (required_number(in, d, what + " inertia") < 0)
-            fail(in, what + ": negative inertia " + d + " (expected >= 0 kg*m^2)");
-      }
-    }
+    if (const XMLElement* inertial = link->FirstChildElement("inertial"))
+      check_inertial(inertial, what);
     for (const XMLElement* col = link->FirstChildElement("collision"); col;
          col = col->NextSiblingElement("collision")) {
       const XMLElement* geom = col->FirstChildElement("geometry");
       if (!geom || !geom->FirstChildElement())
         fail(col, what + ": <collision> without a <geometry> shape");
-      const XMLElement* shape = geom->FirstChildElement();
-      const std::string_view kind = shape->Name();
-      if (kind == "mesh")
-        fail(
-            shape,
-            what + ": mesh collision geometry is not supported (expected box, cylinder or sphere)");
-      if (kind == "box") {
-        required_number(shape, "size", what + " box");
-      } else if (kind == "sphere") {
-        if (required_number(shape, "radius", what + " sphere") <= 0)
-          fail(shape, what + ": sphere radius must be > 0");
-      } else if (kind == "cylinder") {
-        if (required_number(shape, "radius", what + " cylinder") <= 0 ||
-            required_number(shape, "length", what + " cylinder") <= 0)
-          fail(shape, what + ": cylinder radius and length must be > 0");
-      } else {
-        fail(shape, what + ": unknown geometry <" + std::string(kind) +
-                        "> (expected box, cylinder or sphere)");
-      }
+      check_origin(col, what + " collision");
+      check_shape(geom->FirstChildElement(), what);
     }
+    return {name, link->GetLineNum()};
   }
 
-  void check_joint(const XMLElement* joint) const {
+  std::string link_of(const XMLElement* joint, const char* end, const std::string& what) const {
+    const XMLElement* e = joint->FirstChildElement(end);
+    const char* link = e ? e->Attribute("link") : nullptr;
+    if (!link) fail(joint, what + ": needs <parent link=...> and <child link=...>");
+    return link;
+  }
+
+  void check_limit(const XMLElement* joint, std::string_view t, const std::string& what) const {
+    const XMLElement* limit = joint->FirstChildElement("limit");
+    if (!limit) {
+      if (t == "revolute" || t == "prismatic")
+        fail(joint, what + ": " + std::string(t) +
+                        " joint without <limit> (expected lower, upper, effort, velocity)");
+      return;
+    }
+    const std::string w = what + " limit";
+    const bool needs_range = t == "revolute" || t == "prismatic";
+    const auto bound = [&](const char* attr) {
+      if (needs_range || limit->Attribute(attr))
+        return in_range(limit, attr, w, -limits::kMaxJointRange, limits::kMaxJointRange,
+                        t == "prismatic" ? "m" : "rad");
+      return 0.0;
+    };
+    const double lo = bound("lower");
+    const double hi = bound("upper");
+    if (lo > hi) fail(limit, what + ": lower limit above upper limit");
+    in_range(limit, "effort", w, 0, limits::kMaxForce, t == "prismatic" ? "N" : "N*m");
+    in_range(limit, "velocity", w, 0, limits::kMaxSpeed, t == "prismatic" ? "m/s" : "rad/s");
+  }
+
+  UrdfJointRecord check_joint(const XMLElement* joint) const {
     const char* name = joint->Attribute("name");
     const char* type = joint->Attribute("type");
     if (!name) fail(joint, "<joint> without a name");
@@ -108,20 +202,27 @@ struct Checker {
     if (t != "revolute" && t != "continuous" && t != "prismatic" && t != "fixed")
       fail(joint, what + ": unsupported type '" + std::string(t) +
                       "' (expected revolute, continuous, prismatic or fixed)");
-    if (!joint->FirstChildElement("parent") || !joint->FirstChildElement("child"))
-      fail(joint, what + ": needs <parent link=...> and <child link=...>");
-    if (t == "revolute" || t == "prismatic") {
-      const XMLElement* limit = joint->FirstChildElement("limit");
-      if (!limit)
-        fail(joint, what + ": " + std::string(t) +
-                        " joint without <limit> (expected lower, upper, effort, velocity)");
-      double lo = required_number(limit, "lower", what + " limit");
-      double hi = required_number(limit, "upper", what + " limit");
-      if (lo > hi) fail(limit, what + ": lower limit above upper limit");
-      if (required_number(limit, "effort", what + " limit") < 0 ||
-          required_number(limit, "velocity", what + " limit") < 0)
-        fail(limit, what + ": effort and velocity limits must be >= 0");
+    UrdfJointRecord r{name,
+                      type,
+                      link_of(joint, "parent", what),
+                      link_of(joint, "child", what),
+                      "",
+                      joint->GetLineNum()};
+    check_origin(joint, what);
+    if (const XMLElement* axis = joint->FirstChildElement("axis")) {
+      const auto a = bounded(axis, "xyz", what + " axis", 3, 1e6, "");
+      if (a.size() == 3 && std::hypot(a[0], a[1], a[2]) < 1e-9)
+        fail(axis,
+             what + ": zero axis '" + axis->Attribute("xyz") + "' (expected a non-zero direction)");
     }
+    check_limit(joint, t, what);
+    if (const XMLElement* mimic = joint->FirstChildElement("mimic")) {
+      if (!mimic->Attribute("joint")) fail(mimic, what + ": <mimic> without attribute 'joint'");
+      r.mimic = mimic->Attribute("joint");
+      bounded(mimic, "multiplier", what + " mimic", 1, limits::kMaxMimicFactor, "");
+      bounded(mimic, "offset", what + " mimic", 1, limits::kMaxMimicFactor, "");
+    }
+    return r;
   }
 };
 
@@ -130,19 +231,28 @@ struct Checker {
 void validate_urdf_text(const std::string& xml, const std::string& source_name) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS)
-    throw error_at(source_name, doc.ErrorLineNum(),
-                   xml_error_text(doc));
+    throw error_at(source_name, doc.ErrorLineNum(), xml_error_text(doc));
   const XMLElement* robot = doc.RootElement();
   Checker c{source_name};
   if (!robot || std::string_view(robot->Name()) != "robot")
     c.fail(robot, "expected <robot> as the root element");
+  int count = 0;  // a robot over the size limit is refused before any other check
+  const XMLElement* too_many = nullptr;
+  for (const XMLElement* e = robot->FirstChildElement("link"); e; e = e->NextSiblingElement("link"))
+    if (++count == limits::kMaxLinks + 1) too_many = e;
+  if (too_many)
+    c.fail(too_many, "robot with " + std::to_string(count) + " links (at most " +
+                         std::to_string(limits::kMaxLinks) + ")");
+  std::vector<UrdfLinkRecord> links;
+  std::vector<UrdfJointRecord> joints;
   for (const XMLElement* e = robot->FirstChildElement(); e; e = e->NextSiblingElement()) {
     const std::string_view n = e->Name();
     if (n == "link")
-      c.check_link(e);
+      links.push_back(c.check_link(e));
     else if (n == "joint")
-      c.check_joint(e);
+      joints.push_back(c.check_joint(e));
   }
+  check_urdf_tree(links, joints, source_name);
 }
 
 }  // namespace stride::model

@@ -9,7 +9,7 @@ ReplayLink::ReplayLink(const LogReader& log, std::size_t first_frame)
 }
 
 bool ReplayLink::read(hal::SensorFrame& out) {
-  if (next_ >= log_.frame_count()) return false;
+  if (next_ >= log_.readable_prefix()) return false;  // never past a damaged frame
   out = log_.read<hal::SensorFrame>(next_++);
   return true;
 }
@@ -19,6 +19,7 @@ ReplayResult replay_and_compare(const LogReader& log, const ModuleRegistry& regi
   ReplayLink link(log);
   Runtime runtime(registry, config, link);
   ReplayResult result;
+  result.stopped_before_damaged = log.readable_prefix() < log.frame_count();
   std::vector<std::pair<int, const Slot*>> pairs;
   for (std::size_t i = 0; i < log.types().size(); ++i) {
     const auto& name = log.types()[i].name;
@@ -77,6 +78,7 @@ void export_csv(const LogReader& log, const std::vector<std::string>& keys, std:
   write_row(header);
   std::vector<std::string> cells;
   for (std::size_t f = 0; f < log.frame_count(); ++f) {
+    if (!log.readable(f)) continue;  // a damaged frame has no row; the frame column shows the gap
     cells.assign(1, std::to_string(f));
     for (const auto& c : columns) {
       const auto v = log.value(f, c.representation);

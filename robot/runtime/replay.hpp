@@ -11,7 +11,8 @@
 
 namespace stride {
 
-// A HardwareLink that delivers the logged SensorFrames in order; period from the logged FrameInfo.
+// A HardwareLink that delivers the logged SensorFrames in order, up to the first damaged frame;
+// period from the logged FrameInfo.
 class ReplayLink final : public hal::HardwareLink {
  public:
   explicit ReplayLink(const LogReader& log, std::size_t first_frame = 0);
@@ -33,19 +34,22 @@ struct ReplayMismatch {
 };
 
 struct ReplayResult {
-  std::size_t frames = 0;             // frames replayed
-  std::vector<std::string> compared;  // representations compared every frame
+  std::size_t frames = 0;               // frames replayed
+  bool stopped_before_damaged = false;  // the log has a damaged frame; frames from it were not
+  std::vector<std::string> compared;    // representations compared every frame
   std::vector<ReplayMismatch> mismatches;
 };
 
-// Runs a fresh Runtime over the whole log and compares every logged representation except
-// ModuleTimes (wall-clock measurements) with what the replay produced, byte for byte. The
-// configuration must be the one the log was recorded with (no provider swaps during the log).
+// Runs a fresh Runtime over the log up to its first damaged frame and compares every logged
+// representation except ModuleTimes (wall-clock measurements) with what the replay produced, byte
+// for byte. The configuration must be the one the log was recorded with (no provider swaps during
+// the log).
 ReplayResult replay_and_compare(const LogReader& log, const ModuleRegistry& registry,
                                 const RuntimeConfig& config);
 
-// CSV of chosen fields, one row per frame: keys like "FrameInfo.time", "JointRequest.position[3]",
-// or a whole representation/sub-struct, which expands to all its leaf columns.
+// CSV of chosen fields, one row per readable frame (damaged frames have none): keys like
+// "FrameInfo.time", "JointRequest.position[3]", or a whole representation/sub-struct, which expands
+// to all its leaf columns.
 void export_csv(const LogReader& log, const std::vector<std::string>& keys, std::ostream& out);
 
 }  // namespace stride

@@ -207,7 +207,12 @@ bool Runtime::step() {
     ++safety_->held_frames;
   }
   link_.write(command_);
-  if (log_) log_->write_frame();
+  if (log_) try {
+      log_->write_frame();
+    } catch (const Error&) {
+      log_.reset();  // the frames written so far stay readable; recording stops here
+      throw;
+    }
   return true;
 }
 
@@ -293,7 +298,7 @@ void Runtime::set(std::string_view key, std::string_view text) {
   if (!k.representation) return set_parameters(k.name, update);
   auto it = by_name_.find(k.name);
   if (it == by_name_.end()) throw Error("no representation '" + k.name + "' on the blackboard");
-  it->second->update(update, k.name);
+  it->second->update(update, k.name, Numbers::Finite);
 }
 
 const TypeDesc& Runtime::type_of(std::string_view key) const {
@@ -335,18 +340,20 @@ void Runtime::set_debug_request(const std::string& name, bool on) {
   debug_bits_.set(it - debug_names_.begin(), on);
 }
 
-void Runtime::start_log(const std::string& path) {
+void Runtime::start_log(const std::string& path, const LogMetadata& metadata) {
   std::vector<std::pair<std::string, const Slot*>> slots;
   for (const auto& s : slots_) slots.emplace_back(s->desc().name, s.get());
-  log_ = std::make_unique<LogWriter>(path, std::move(slots));
+  log_ = std::make_unique<LogWriter>(path, std::move(slots), metadata);
 }
 
 void Runtime::stop_log() {
-  log_.reset();
+  auto log = std::move(log_);
+  if (log) log->close();
 }
 
 std::vector<std::string> Runtime::load_frame(const LogReader& log, std::size_t frame) {
   std::vector<std::string> skipped;
+  std::vector<std::pair<Slot*, std::string_view>> loads;
   for (std::size_t i = 0; i < log.types().size(); ++i) {
     const auto& t = log.types()[i];
     auto it = by_name_.find(t.name);
@@ -354,8 +361,11 @@ std::vector<std::string> Runtime::load_frame(const LogReader& log, std::size_t f
       skipped.push_back(t.name);
       continue;
     }
-    it->second->decode(log.bytes(frame, static_cast<int>(i)));
+    const std::string_view bytes = log.bytes(frame, static_cast<int>(i));
+    it->second->fresh()->decode(bytes);  // every one decodes before the blackboard changes
+    loads.emplace_back(it->second, bytes);
   }
+  for (const auto& [slot, bytes] : loads) slot->decode(bytes);
   return skipped;
 }
 

@@ -71,7 +71,8 @@ class Runtime {
   void set_debug_request(const std::string& name, bool on);
 
   // Logs every representation on the blackboard every frame (see log.hpp).
-  void start_log(const std::string& path);
+  // `metadata` goes into the log's header (e.g. the providers, the robot's name).
+  void start_log(const std::string& path, const LogMetadata& metadata = {});
   void stop_log();
   bool logging() const { return log_ != nullptr; }
   // Puts frame `frame` of a log onto the blackboard (for `log goto`); returns the names skipped

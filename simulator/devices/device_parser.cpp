@@ -1,12 +1,13 @@
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 #include <vector>
 
 #include "robot/core/error.hpp"
+#include "robot/core/input_file.hpp"
 #include "robot/core/xml_error.hpp"
+#include "robot/model/physical_limits.hpp"
 #include "simulator/devices/device_description.hpp"
 #include "simulator/devices/device_parser.hpp"
 #include "robot/core/xml_element.hpp"
@@ -16,19 +17,38 @@ namespace {
 
 using tinyxml2::XMLElement;
 
+// Device numbers beyond this (in their SI unit; forces and torques: limits::kMaxForce) are no
+// device: they would only reach the physics as overflow.
+constexpr double kMaxDeviceNumber = 1e6;
+
 double non_negative(const XmlElement& e, const char* a, double fallback,
-                    Dimension d = Dimension::None) {
+                    Dimension d = Dimension::None, double most = kMaxDeviceNumber) {
   const double v = e.number_or(a, fallback, d);
   if (v < 0) e.fail_attr(a, "expected a value >= 0");
+  if (e.has(a)) e.check_within(a, v, 0, most, d);
   return v;
 }
 
-double positive(const XmlElement& e, const char* a, double fallback,
-                Dimension d = Dimension::None) {
+double positive(const XmlElement& e, const char* a, double fallback, Dimension d = Dimension::None,
+                double most = kMaxDeviceNumber) {
   const double v = e.number_or(a, fallback, d);
   if (v <= 0) e.fail_attr(a, "expected a value > 0");
+  if (e.has(a)) e.check_within(a, v, 0, most, d);
   return v;
 }
+
+// The first element of each kind (or named thing) by "file:line", so a second names both.
+class SeenOnce {
+ public:
+  void check(const XmlElement& e, const std::string& key, const std::string& what) {
+    const auto [it, fresh] = seen_.emplace(key, e.file() + ":" + std::to_string(e.line()));
+    if (!fresh)
+      e.fail((what.empty() ? "" : what + " ") + "given twice (first at " + it->second + ")");
+  }
+
+ private:
+  std::map<std::string, std::string> seen_;
+};
 
 // The <motor> attributes besides its name, with their units and where they go.
 struct MotorNumber {
@@ -99,13 +119,15 @@ ImuSpec imu(const XmlElement& e) {
                 "gyro_bias", "accel_bias", "accel_range", "gyro_range", "delay"});
   ImuSpec s;
   s.link = e.text_or("link", s.link);
-  s.accelerometer_at = e.vector3_or("accelerometer", s.accelerometer_at, Dimension::Length);
-  s.gyroscope_at = e.vector3_or("gyroscope", s.gyroscope_at, Dimension::Length);
+  s.accelerometer_at =
+      e.vector3_within("accelerometer", s.accelerometer_at, limits::kMaxLength, Dimension::Length);
+  s.gyroscope_at =
+      e.vector3_within("gyroscope", s.gyroscope_at, limits::kMaxLength, Dimension::Length);
   s.accel_noise = non_negative(e, "accel_noise", 0);
   s.gyro_noise = non_negative(e, "gyro_noise", 0, Dimension::Angle);
   s.angle_noise = non_negative(e, "angle_noise", 0, Dimension::Angle);
-  s.gyro_bias = e.vector3_or("gyro_bias", s.gyro_bias, Dimension::Angle);
-  s.accel_bias = e.vector3_or("accel_bias", s.accel_bias);
+  s.gyro_bias = e.vector3_within("gyro_bias", s.gyro_bias, kMaxDeviceNumber, Dimension::Angle);
+  s.accel_bias = e.vector3_within("accel_bias", s.accel_bias, kMaxDeviceNumber);
   s.accel_range = positive(e, "accel_range", s.accel_range);
   s.gyro_range = positive(e, "gyro_range", s.gyro_range, Dimension::Angle);
   s.delay_frames = e.integer_or("delay", 0, 0, 100);
@@ -117,8 +139,9 @@ FsrSpec fsr(const XmlElement& e) {
   FsrSpec f;
   f.link = e.text("link");
   f.sole_z = e.number("sole_z", Dimension::Length);
-  f.noise = non_negative(e, "noise", 0, Dimension::Force);
-  f.max_force = positive(e, "max_force", f.max_force, Dimension::Force);
+  e.check_within("sole_z", f.sole_z, -limits::kMaxLength, limits::kMaxLength, Dimension::Length);
+  f.noise = non_negative(e, "noise", 0, Dimension::Force, limits::kMaxForce);
+  f.max_force = positive(e, "max_force", f.max_force, Dimension::Force, limits::kMaxForce);
   int n = 0;
   for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
     XmlElement s(c, e.file());
@@ -128,6 +151,9 @@ FsrSpec fsr(const XmlElement& e) {
     f.names[n] = s.text("name");
     f.positions[n] =
         Eigen::Vector2d(s.number("x", Dimension::Length), s.number("y", Dimension::Length));
+    for (int k = 0; k < 2; ++k)
+      s.check_within(k ? "y" : "x", f.positions[n][k], -limits::kMaxLength, limits::kMaxLength,
+                     Dimension::Length);
     ++n;
   }
   if (n != 4) e.fail("an <fsr> has exactly four <sensor> children (FL, FR, RL, RR)");
@@ -137,11 +163,7 @@ FsrSpec fsr(const XmlElement& e) {
 }  // namespace
 
 DeviceDescription load_device_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ":0: cannot open device file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = read_input_file(path, kMaxTextInputBytes, "device file");
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
     throw error_at(path, doc.ErrorLineNum(), xml_error_text(doc));
@@ -152,17 +174,21 @@ DeviceDescription load_device_file(const std::string& path) {
   d.file = path;
   XmlElement r(root, d.file);
   r.allow_only({"period"});
-  d.period = positive(r, "period", d.period, Dimension::Time);
+  d.period = positive(r, "period", d.period, Dimension::Time, 10);
+  SeenOnce seen;
   for (const XMLElement* c = root->FirstChildElement(); c; c = c->NextSiblingElement()) {
     XmlElement e(c, d.file);
     const std::string_view n = e.name();
+    if (n == "encoder" || n == "imu") seen.check(e, std::string(n), "");
     if (n == "motor") {
       d.motors.push_back(motor(e));
+      seen.check(e, "motor " + d.motors.back().name, "name '" + d.motors.back().name + "'");
     } else if (n == "servo") {
       e.allow_only({"joint", "motor", "offset"});
       ServoSpec s;
       s.joint = e.text("joint");
-      s.offset = e.number_or("offset", 0.0, Dimension::Angle);
+      seen.check(e, "servo " + s.joint, "joint '" + s.joint + "'");
+      s.offset = e.number_within("offset", 0.0, -0.5, 0.5, Dimension::Angle);
       const std::string m = e.text("motor");
       for (size_t i = 0; i < d.motors.size(); ++i)
         if (d.motors[i].name == m) s.motor = static_cast<int>(i);
@@ -176,6 +202,7 @@ DeviceDescription load_device_file(const std::string& path) {
       d.imu = imu(e);
     } else if (n == "fsr") {
       d.fsrs.push_back(fsr(e));
+      seen.check(e, "fsr " + d.fsrs.back().link, "link '" + d.fsrs.back().link + "'");
     } else {
       e.fail("unknown element (expected motor, servo, encoder, imu or fsr)");
     }
@@ -197,7 +224,7 @@ ServoOverride servo_override(const XmlElement& e) {
   ServoOverride o;
   o.motor = motor_numbers(e, {"joint", "offset"});
   o.joint = e.text("joint");
-  if (e.has("offset")) o.offset = e.number("offset", Dimension::Angle);
+  if (e.has("offset")) o.offset = e.number_within("offset", 0, -0.5, 0.5, Dimension::Angle);
   if (!o.offset && o.motor.empty())
     e.fail(
         "expected an offset or a motor attribute to change (e.g. offset=\"3deg\", spring=\"400\")");

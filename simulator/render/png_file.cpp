@@ -5,6 +5,7 @@
 #include <png.h>
 
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::render {
 
@@ -15,8 +16,15 @@ void write_png(const std::string& path, const RgbaImage& image) {
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = PNG_FORMAT_RGBA;
-  if (!png_image_write_to_file(&png, path.c_str(), 0, image.rgba.data(), 0, nullptr))
+  // Encoded in memory, so the file's writes go through the checked writer.
+  png_alloc_size_t size = 0;
+  if (!png_image_write_get_memory_size(png, size, 0, image.rgba.data(), 0, nullptr))
     throw Error("cannot write PNG '" + path + "': " + png.message);
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgba.data(), 0, nullptr))
+    throw Error("cannot write PNG '" + path + "': " + png.message);
+  bytes.resize(size);
+  write_file(path, bytes);
 }
 
 RgbaImage read_png(const std::string& path) {

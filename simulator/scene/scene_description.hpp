@@ -1,6 +1,7 @@
 #pragma once
 // A scene as plain data: everything the world is built from. Parsed and validated completely
 // before any world exists, so a bad file never half-loads.
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -56,7 +57,15 @@ struct UnevenPatch {
   double max_tilt = 0.02;     // rad, each tile tilted uniformly in [-max_tilt, max_tilt] per axis
   double friction = 0.8;
   std::uint64_t seed = 0;  // 0: derived from the scene seed
+
+  // Tiles along x and y: the size in whole cells, at least one.
+  int tiles_x() const { return std::max(1, static_cast<int>(size.x() / cell + 0.5)); }
+  int tiles_y() const { return std::max(1, static_cast<int>(size.y() / cell + 0.5)); }
 };
+
+inline long uneven_tile_count(const UnevenPatch& u) {
+  return static_cast<long>(u.tiles_x()) * u.tiles_y();
+}
 
 struct SensorSwitches {
   bool noise = true;

@@ -2,18 +2,21 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
 
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/input_file.hpp"
 #include "robot/core/pose.hpp"
 #include "robot/core/xml_element.hpp"
 #include "robot/core/xml_error.hpp"
+#include "robot/model/physical_limits.hpp"
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
+#include "simulator/scene/scene_limits.hpp"
 #include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
@@ -22,6 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
+
+constexpr double kMaxAngle = 1e3;  // rad: |roll|, |pitch|, |yaw| of anything placed
 
 class Parser {
  public:
@@ -37,14 +42,14 @@ class Parser {
   }
 
   void parse_file(const std::string& path, const XmlElement* included_from) {
-    std::ifstream in(path);
-    if (!in) {
-      if (included_from) included_from->fail("cannot open included file '" + path + "'");
-      throw Error(path + ":0: cannot open scene file");
+    std::string text;
+    try {  // a directory, device, FIFO or oversized file is refused before it is read
+      text = read_input_file(path, kMaxTextInputBytes, included_from ? "included file" : "scene");
+    } catch (const Error& e) {
+      if (included_from) included_from->fail(e.what());
+      throw;
     }
-    std::stringstream ss;
-    ss << in.rdbuf();
-    parse_text(ss.str(), path, included_from);
+    parse_text(text, path, included_from);
   }
 
   void parse_text(const std::string& text, const std::string& path,
@@ -106,6 +111,22 @@ class Parser {
           "light or include)");
   }
 
+  // <physics>, <ground>: one per scene, includes counted; a second one names both places.
+  void once(const XmlElement& e) {
+    const std::string here = e.file() + ":" + std::to_string(e.line());
+    const auto [it, fresh] = seen_once_.emplace(std::string(e.name()), here);
+    if (!fresh) e.fail("given twice (first at " + it->second + "; expected one per scene)");
+  }
+
+  // Boxes, ramps and uneven tiles together stay within the scene limit.
+  void add_static_shapes(const XmlElement& e, long n) {
+    static_shapes_ += n;
+    if (static_shapes_ > scene_limits::kMaxStaticGeoms)
+      e.fail("the scene's static shapes would number " + std::to_string(static_shapes_) +
+             " (boxes, ramps and uneven tiles; at most " +
+             std::to_string(scene_limits::kMaxStaticGeoms) + ")");
+  }
+
   void no_children(const XmlElement& e) {
     if (e.raw()->FirstChildElement())
       XmlElement(e.raw()->FirstChildElement(), e.file())
@@ -119,6 +140,7 @@ class Parser {
                   "contact_stiffness", "contact_damping", "contact_spring_per", "max_contacts",
                   "gravity", "seed"});
     no_children(e);
+    once(e);
     PhysicsSettings& p = out_.physics;
     p.step = e.number_or("step", p.step, Dimension::Time);
     if (p.step <= 0 || p.step > 0.02) e.fail_attr("step", "expected a time in (0, 20 ms]");
@@ -137,7 +159,7 @@ class Parser {
     if (p.contact_spring_per_body && !e.has("contact_stiffness"))
       e.fail_attr("contact_spring_per", "expected contact_stiffness and contact_damping with it");
     p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
-    p.gravity = e.vector3_or("gravity", p.gravity);
+    p.gravity = e.vector3_within("gravity", p.gravity, limits::kMaxGravity);
     p.seed = e.seed_or("seed", p.seed);
   }
 
@@ -199,6 +221,7 @@ class Parser {
   void ground(const XmlElement& e) {
     e.allow_only({"enabled", "friction"});
     no_children(e);
+    once(e);
     out_.ground.enabled = e.boolean_or("enabled", true);
     out_.ground.friction = non_negative(e, "friction", out_.ground.friction);
   }
@@ -210,10 +233,14 @@ class Parser {
     b.name = e.text_or("name", "box" + std::to_string(out_.boxes.size()));
     b.size = e.vector3_or("size", b.size, Dimension::Length);
     if ((b.size.array() <= 0).any()) e.fail_attr("size", "expected three lengths > 0");
-    b.pose = pose_from_xyz_rpy(e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length),
-                               e.vector3_or("rpy", Eigen::Vector3d::Zero(), Dimension::Angle));
+    for (int i = 0; i < 3; ++i)
+      e.check_within("size", b.size[i], 0, 2 * limits::kMaxPosition, Dimension::Length);
+    b.pose = pose_from_xyz_rpy(
+        e.vector3_within("xyz", Eigen::Vector3d::Zero(), limits::kMaxPosition, Dimension::Length),
+        e.vector3_within("rpy", Eigen::Vector3d::Zero(), kMaxAngle, Dimension::Angle));
     b.friction = non_negative(e, "friction", b.friction);
     b.line = e.line();
+    add_static_shapes(e, 1);
     out_.boxes.push_back(b);
   }
 
@@ -226,10 +253,13 @@ class Parser {
     const double length = positive(e, "length", 1.0, Dimension::Length);
     const double width = positive(e, "width", 1.0, Dimension::Length);
     const double thick = positive(e, "thickness", 0.05, Dimension::Length);
+    for (const char* a : {"length", "width", "thickness"})
+      e.number_within(a, 1, 0, 2 * limits::kMaxPosition, Dimension::Length);
     const double slope = e.number("slope", Dimension::Angle);
     if (std::abs(slope) >= 1.2) e.fail_attr("slope", "expected an angle below 1.2 rad");
-    const double yaw = e.number_or("yaw", 0, Dimension::Angle);
-    const Eigen::Vector3d start = e.vector3_or("xyz", Eigen::Vector3d::Zero(), Dimension::Length);
+    const double yaw = e.number_within("yaw", 0, -kMaxAngle, kMaxAngle, Dimension::Angle);
+    const Eigen::Vector3d start =
+        e.vector3_within("xyz", Eigen::Vector3d::Zero(), limits::kMaxPosition, Dimension::Length);
     b.size = Eigen::Vector3d(length, width, thick);
     // Top-surface centre lies half a length up the slope from the start edge.
     const Eigen::Matrix3d r = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
@@ -240,6 +270,7 @@ class Parser {
     b.pose.translation() = start + r * Eigen::Vector3d(length / 2, 0, -thick / 2);
     b.friction = non_negative(e, "friction", b.friction);
     b.line = e.line();
+    add_static_shapes(e, 1);
     out_.boxes.push_back(b);
   }
 
@@ -250,8 +281,8 @@ class Parser {
     c.name = e.text("name");
     for (const SceneCamera& other : out_.cameras)
       if (other.name == c.name) e.fail_attr("name", "a camera '" + c.name + "' exists already");
-    c.eye = e.vector3_or("xyz", c.eye, Dimension::Length);
-    c.look_at = e.vector3_or("look_at", c.look_at, Dimension::Length);
+    c.eye = e.vector3_within("xyz", c.eye, limits::kMaxPosition, Dimension::Length);
+    c.look_at = e.vector3_within("look_at", c.look_at, limits::kMaxPosition, Dimension::Length);
     if ((c.look_at - c.eye).norm() < 1e-6) e.fail_attr("look_at", "expected a point away from xyz");
     c.fov = e.number_or("fov", c.fov, Dimension::Angle);
     if (!(c.fov > 0.05 && c.fov < 3.0)) e.fail_attr("fov", "expected an angle in (0.05, 3) rad");
@@ -279,23 +310,27 @@ class Parser {
     no_children(e);
     UnevenPatch u;
     u.name = e.text_or("name", "uneven" + std::to_string(out_.uneven.size()));
-    u.centre = e.vector2_or("centre", u.centre, Dimension::Length);
-    u.size = e.vector2_or("size", u.size, Dimension::Length);
+    u.centre = e.vector2_within("centre", u.centre, limits::kMaxPosition, Dimension::Length);
+    u.size = e.vector2_within("size", u.size, 2 * limits::kMaxPosition, Dimension::Length);
     if ((u.size.array() <= 0).any()) e.fail_attr("size", "expected two lengths > 0");
     u.cell = positive(e, "cell", u.cell, Dimension::Length);
     if (u.size.x() / u.cell * u.size.y() / u.cell > 200000)
       e.fail_attr("cell", "too many tiles (more than 200000); use a larger cell");
     u.max_height = non_negative(e, "height", u.max_height, Dimension::Length);
+    e.number_within("height", 0, 0, limits::kMaxLength, Dimension::Length);
     u.max_tilt = non_negative(e, "tilt", u.max_tilt, Dimension::Angle);
     if (u.max_tilt > 0.5) e.fail_attr("tilt", "expected at most 0.5 rad");
     u.friction = non_negative(e, "friction", u.friction);
     u.seed = e.seed_or("seed", 0);
+    add_static_shapes(e, uneven_tile_count(u));
     out_.uneven.push_back(u);
   }
 
   void robot(const XmlElement& e) {
     e.allow_only({"name", "urdf", "devices", "xyz", "rpy", "fixed", "stiffness", "fall_tilt",
                   "fall_height", "period"});
+    if (out_.robots.size() >= static_cast<std::size_t>(scene_limits::kMaxRobots))
+      e.fail("more than " + std::to_string(scene_limits::kMaxRobots) + " robots in one scene");
     RobotPlacement r;
     r.file = e.file();
     r.line = e.line();
@@ -305,36 +340,62 @@ class Parser {
         e.fail_attr("name", "a robot named '" + r.name + "' already exists");
     r.urdf = resolve(e, e.text("urdf"));
     r.devices = e.has("devices") ? resolve(e, e.text("devices")) : std::string();
-    if (e.has("xyz")) {
-      std::istringstream in(e.text("xyz"));
-      std::string xs, ys, zs, extra;
-      in >> xs >> ys >> zs >> extra;
-      if (zs.empty() || !extra.empty())
-        e.fail_attr("xyz", "expected 'x y z' lengths, z may be 'auto'");
-      try {
-        r.xyz.x() = parse_quantity(xs, Dimension::Length);
-        r.xyz.y() = parse_quantity(ys, Dimension::Length);
-        r.auto_height = zs == "auto";
-        if (!r.auto_height) r.xyz.z() = parse_quantity(zs, Dimension::Length);
-      } catch (const std::invalid_argument& ex) {
-        e.fail_attr("xyz", ex.what());
-      }
-    }
-    r.rpy = e.vector3_or("rpy", r.rpy, Dimension::Angle);
+    if (e.has("xyz")) placement_xyz(e, r);
+    r.rpy = e.vector3_within("rpy", r.rpy, kMaxAngle, Dimension::Angle);
     r.fixed_base = e.boolean_or("fixed", false);
     r.stiffness = e.number_or("stiffness", 1.0);
     if (r.stiffness < 0 || r.stiffness > 1) e.fail_attr("stiffness", "expected a value in [0, 1]");
-    if (e.has("period")) r.period = positive(e, "period", 0.01, Dimension::Time);
+    if (e.has("period")) {
+      r.period = positive(e, "period", 0.01, Dimension::Time);
+      e.check_within("period", r.period, 0, 10, Dimension::Time);
+    }
     r.fall_tilt = positive(e, "fall_tilt", r.fall_tilt, Dimension::Angle);
     r.fall_height = non_negative(e, "fall_height", r.fall_height, Dimension::Length);
+    robot_children(e, r);
+    out_.robots.push_back(std::move(r));
+  }
+
+  // xyz="x y z" with z a length or 'auto' (lowest collision point on the floor).
+  static void placement_xyz(const XmlElement& e, RobotPlacement& r) {
+    std::istringstream in(e.text("xyz"));
+    std::string xs, ys, zs, extra;
+    in >> xs >> ys >> zs >> extra;
+    if (zs.empty() || !extra.empty())
+      e.fail_attr("xyz", "expected 'x y z' lengths, z may be 'auto'");
+    try {
+      r.xyz.x() = parse_quantity(xs, Dimension::Length);
+      r.xyz.y() = parse_quantity(ys, Dimension::Length);
+      r.auto_height = zs == "auto";
+      if (!r.auto_height) r.xyz.z() = parse_quantity(zs, Dimension::Length);
+    } catch (const std::invalid_argument& ex) {
+      e.fail_attr("xyz", ex.what());
+    }
+    for (int i = 0; i < 3; ++i)
+      e.check_within("xyz", r.xyz[i], -limits::kMaxPosition, limits::kMaxPosition,
+                     Dimension::Length);
+  }
+
+  void robot_children(const XmlElement& e, RobotPlacement& r) {
+    std::map<std::string, std::string> seen;  // "<joints>", "motor pitch", ... -> "file:line"
+    const auto once = [&](const XmlElement& c, const std::string& key, const std::string& what) {
+      const auto [it, fresh] = seen.emplace(key, c.file() + ":" + std::to_string(c.line()));
+      if (!fresh)
+        c.fail((what.empty() ? "" : what + " ") + "given twice in one <robot> (first at " +
+               it->second + ")");
+    };
     for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
       XmlElement child(c, e.file());
       const std::string_view n = child.name();
+      if (n == "joints" || n == "sensors" || n == "controller" || n == "calibration")
+        once(child, std::string(n), "");
+      if ((n == "motor" || n == "servo" || n == "calibration") && r.devices.empty())
+        child.fail("<" + std::string(n) + "> changes the device file, and there is none");
       if (n == "joints") {
         // Attributes are joint names; they are checked against the URDF when the world is built.
         r.joints_line = child.line();
         for (const tinyxml2::XMLAttribute* a = c->FirstAttribute(); a; a = a->Next())
-          r.joints[a->Name()] = child.number(a->Name(), Dimension::Angle);
+          r.joints[a->Name()] = child.number_within(a->Name(), 0, -limits::kMaxJointRange,
+                                                    limits::kMaxJointRange, Dimension::Angle);
       } else if (n == "sensors") {
         child.allow_only({"noise", "delay", "quantise"});
         r.sensors.noise = child.boolean_or("noise", true);
@@ -344,15 +405,12 @@ class Parser {
         r.has_controller = true;
         r.controller = parse_controller(child);
       } else if (n == "motor") {
-        if (r.devices.empty()) child.fail("<motor> changes the device file, and there is none");
         r.motors.push_back(motor_override(child));
+        once(child, "motor " + r.motors.back().name, "name '" + r.motors.back().name + "'");
       } else if (n == "servo") {
-        if (r.devices.empty()) child.fail("<servo> changes the device file, and there is none");
         r.servos.push_back(servo_override(child));
+        once(child, "servo " + r.servos.back().joint, "joint '" + r.servos.back().joint + "'");
       } else if (n == "calibration") {
-        if (r.devices.empty())
-          child.fail("<calibration> changes the device file, and there is none");
-        if (r.calibration) child.fail("one <calibration> per robot");
         r.calibration = calibration_spread(child);
       } else {
         child.fail(
@@ -360,7 +418,6 @@ class Parser {
             "calibration)");
       }
     }
-    out_.robots.push_back(std::move(r));
   }
 
   void push(const XmlElement& e) {
@@ -369,17 +426,21 @@ class Parser {
     TimedPush p;
     p.robot = e.text("robot");
     p.body = e.text("body");
-    p.force = e.vector3_or("force", p.force, Dimension::Force);
+    p.force = e.vector3_within("force", p.force, limits::kMaxForce, Dimension::Force);
     if (!e.has("force")) e.fail("missing attribute 'force'");
-    p.at = e.vector3_or("at", p.at, Dimension::Length);
+    p.at = e.vector3_within("at", p.at, limits::kMaxLength, Dimension::Length);
     p.start = non_negative(e, "start", 0, Dimension::Time);
+    e.number_within("start", 0, 0, limits::kMaxDuration, Dimension::Time);
     p.duration = positive(e, "duration", 0.1, Dimension::Time);
+    e.number_within("duration", 0, 0, limits::kMaxDuration, Dimension::Time);
     p.file = e.file();
     p.line = e.line();
     out_.pushes.push_back(p);
   }
 
   SceneDescription& out_;
+  std::map<std::string, std::string> seen_once_;  // element name -> "file:line" of the first
+  long static_shapes_ = 0;
   std::set<std::string> open_files_;
   std::vector<std::unique_ptr<XMLDocument>> docs_;
   std::vector<std::unique_ptr<std::string>> paths_;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "robot/core/error.hpp"
 #include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/scene_limits.hpp"
 #include "simulator/world/ode_context.hpp"
 #include "simulator/world/plane_cull.hpp"
 
@@ -64,8 +66,8 @@ void PhysicsWorld::add_static_box(const StaticBox& box) {
 
 void PhysicsWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
   NoiseSource rng(seed);
-  const int nx = std::max(1, static_cast<int>(patch.size.x() / patch.cell + 0.5));
-  const int ny = std::max(1, static_cast<int>(patch.size.y() / patch.cell + 0.5));
+  const int nx = patch.tiles_x();
+  const int ny = patch.tiles_y();
   const double thickness = 0.02;
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j) {
@@ -118,6 +120,13 @@ void PhysicsWorld::collide_pair(dGeomID g1, dGeomID g2) {
 // the static scene each get 1/n of its spring and damper: the same ERP, n times the CFM.
 void PhysicsWorld::create_contact_joints() {
   points_per_body_.clear();
+  if (pending_.size() > scene_limits::kMaxContacts) {
+    const std::size_t n = pending_.size();
+    pending_.clear();
+    throw Error("physics: " + std::to_string(n) + " contact points in one step (at most " +
+                std::to_string(scene_limits::kMaxContacts) +
+                "; bodies piled into each other or a far too fine floor)");
+  }
   const auto static_side = [](const PendingContact& p) {
     return p.b1 && p.b2 ? nullptr : (p.b1 ? p.b1 : p.b2);
   };

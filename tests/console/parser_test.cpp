@@ -119,7 +119,7 @@ TEST(Parser, WrongArityNamesTheUsage) {
 TEST(Parser, BadArgumentsAreNamed) {
   EXPECT_EQ(error_of("run fast"),
             "run: seconds: expected a number, got 'fast'; usage: run [seconds]");
-  EXPECT_EQ(error_of("run -1"), "run: seconds: expected >= 0; usage: run [seconds]");
+  EXPECT_EQ(error_of("run -1"), "run: seconds: -1 s outside [0, 1e+06]; usage: run [seconds]");
   EXPECT_EQ(error_of("step 0"), "step: frames: 0 is outside [1, 1000000000]; usage: step [frames]");
   EXPECT_EQ(error_of("realtime maybe"),
             "realtime: switch: expected on or off, got 'maybe'; usage: realtime on|off");

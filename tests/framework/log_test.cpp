@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "robot/runtime/log_format.hpp"
 #include "robot/runtime/replay.hpp"
 #include "tests/framework/fake_link.hpp"
 
@@ -45,10 +46,10 @@ TEST(Log, TruncatedInTheMiddleOfAFrameOpensWithEveryCompleteFrame) {
   const auto path = temp_path("stride_log_cut.log");
   record(path, 10, test::test_config());
   const auto full = std::filesystem::file_size(path);
-  // Cut half-way through the last frame (its size prefix plus each part's prefix and bytes).
+  // Cut half-way through the last frame (its frame header plus each part's prefix and bytes).
   LogReader whole(path);
   const auto last_frame_bytes = [&] {
-    std::size_t n = 4;
+    std::size_t n = log_format::kFrameHeaderBytes;
     for (std::size_t i = 0; i < whole.types().size(); ++i) n += 4 + whole.bytes(9, int(i)).size();
     return n;
   }();

@@ -1,30 +1,15 @@
 // The scene and URDF parsers under hostile input, in every (sanitized) test run: the committed
 // corpus plus deterministic mutations of it must parse or fail with one stride::Error line.
-#include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "tests/fuzz_scene/scene_fuzz_target.hpp"
+#include "tests/fuzz_support/corpus.hpp"
 
 namespace stride {
 namespace {
-
-std::vector<std::string> corpus() {
-  std::vector<std::string> out;
-  const auto dir = std::filesystem::path(STRIDE_SOURCE_DIR) / "tests/fuzz_scene/corpus";
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    std::ifstream in(e.path(), std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    out.push_back(ss.str());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 std::string mutate(std::string s, std::mt19937_64& rng) {
   static const char* kTokens[] = {"<",     ">",   "/>",    "\"",     "=",
@@ -52,7 +37,7 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
 }
 
 TEST(SceneFuzz, CorpusAndMutationsParseOrFailWithOneLine) {
-  const auto seeds = corpus();
+  const auto seeds = test::read_corpus("tests/fuzz_scene/corpus");
   ASSERT_GE(seeds.size(), 4u);
   std::mt19937_64 rng(7);
   int errors = 0, parsed = 0;

@@ -148,8 +148,10 @@ TEST(PngFile, RoundTripAndErrorsNameTheFile) {
   EXPECT_EQ(back.rgba, img.rgba);
   EXPECT_NE(error_of([] { read_png("/nonexistent/x.png"); }).find("'/nonexistent/x.png'"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { write_png("/nonexistent/dir/x.png", img); }).find("cannot write PNG"),
-            std::string::npos);
+  EXPECT_EQ(error_of([&] { write_png("/nonexistent/dir/x.png", img); }),
+            "cannot write '/nonexistent/dir/x.png': No such file or directory");
+  EXPECT_EQ(error_of([&] { write_png("/dev/full", img); }),
+            "cannot write '/dev/full': No space left on device");
 }
 
 TEST(SceneCamera, BadAttributesNameFileLineAndExpectation) {
