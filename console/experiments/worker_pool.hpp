@@ -17,8 +17,7 @@ namespace stride::experiments {
 using Failed = std::function<void(std::size_t, const std::string&)>;
 void run_in_workers(std::size_t n, int jobs, const std::function<std::string(std::size_t)>& produce,
                     const std::function<bool(std::size_t, std::string&&)>& use,
-                    const std::function<std::string(std::size_t)>& name,
-                    const Failed& failed = {});
+                    const std::function<std::string(std::size_t)>& name, const Failed& failed = {});
 
 // The default for --jobs: the machine's hardware threads (at least 1).
 int default_jobs();
