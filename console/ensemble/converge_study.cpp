@@ -1,11 +1,11 @@
 #include "console/ensemble/converge_study.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <ostream>
 
 #include "console/ensemble/ensemble_run.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/output_file.hpp"
 
 namespace stride::ensemble {
 namespace {
@@ -41,9 +41,10 @@ void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s
                            {"fell", "fell", ""},
                            {"steps_mean", "steps (kept, mean)", ""}},
                           x, "count", "linespoints");
-  std::ofstream names(o.files.out_dir + "/converge_settings.txt");
+  std::string names;
   for (std::size_t i = 0; i < o.settings.size(); ++i)
-    names << i + 1 << " " << o.settings[i] << "\n";
+    names += std::to_string(i + 1) + " " + o.settings[i] + "\n";
+  write_file(o.files.out_dir + "/converge_settings.txt", names);
 }
 
 }  // namespace
