@@ -7,8 +7,7 @@ namespace stride {
 
 namespace {
 
-const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes",
-                                        "CommandSafety"};
+const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes", "CommandSafety"};
 
 struct Key {
   bool representation;

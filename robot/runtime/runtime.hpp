@@ -121,7 +121,7 @@ class Runtime {
   hal::ActuatorFrame* actuator_ = nullptr;
   CommandSafety* safety_ = nullptr;
   CommandGuard guard_;
-  hal::ActuatorFrame command_;        // what goes to the link this frame
+  hal::ActuatorFrame command_;         // what goes to the link this frame
   model::RobotModel declaring_model_;  // handed out while learning declarations without a model
   std::vector<ModuleFault> faults_;
   std::int64_t frame_counter_ = 0;
