@@ -1,31 +1,15 @@
 // LoLA's packet decoders under hostile input, in every (sanitized) test run: the committed corpus
 // plus deterministic mutations of it must decode or fail with one stride::Error line.
-#include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <random>
-#include <sstream>
-#include <vector>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "tests/fuzz_lola/lola_fuzz_target.hpp"
+#include "tests/fuzz_support/corpus.hpp"
 
 namespace stride {
 namespace {
-
-std::vector<std::string> corpus() {
-  std::vector<std::string> out;
-  const auto dir = std::filesystem::path(STRIDE_SOURCE_DIR) / "tests/fuzz_lola/corpus";
-  for (const auto& e : std::filesystem::directory_iterator(dir)) {
-    std::ifstream in(e.path(), std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    out.push_back(ss.str());
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 // Byte flips, msgpack type tags dropped in, cuts and repeats: what a broken peer sends.
 std::string mutate(std::string s, std::mt19937_64& rng) {
@@ -56,7 +40,7 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
 }
 
 TEST(LolaFuzz, CorpusAndMutationsDecodeOrFailWithOneLine) {
-  const auto seeds = corpus();
+  const auto seeds = test::read_corpus("tests/fuzz_lola/corpus");
   ASSERT_GE(seeds.size(), 6u);
   std::mt19937_64 rng(26);
   int errors = 0, decoded = 0;
