@@ -13,6 +13,7 @@
 #include "simulator/scene/scene_parser.hpp"
 #include "simulator/simulation.hpp"
 #include "simulator/world/gravity_torque.hpp"
+#include "simulator/world/ode/ode_robot_body.hpp"
 
 namespace {
 
@@ -38,8 +39,9 @@ sim::SceneDescription load(const std::string& rel, const Setting& s) {
 // Largest gap between the two bodies' copies of a hinge anchor: the solver's joint error.
 double worst_anchor_gap(const sim::SimulatedRobot& robot) {
   double worst = 0;
+  const auto& body = dynamic_cast<const sim::OdeRobotBody&>(robot.body());
   for (size_t j = 0; j < robot.model().joints.size(); ++j) {
-    dJointID id = robot.body().joint(static_cast<int>(j));
+    dJointID id = body.joint(static_cast<int>(j));
     if (!id || dJointGetType(id) != dJointTypeHinge) continue;
     dVector3 a, b;
     dJointGetHingeAnchor(id, a);

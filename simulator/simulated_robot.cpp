@@ -84,12 +84,8 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
   if (placement.auto_height) root.translation().z() -= lowest_point(*model_, q, root);
 
   try {
-    body_ = std::make_unique<RobotBody>(world, *model_, index, root, q);
-    if (placement.fixed_base) {
-      dJointID weld = dJointCreateFixed(world.world(), nullptr);
-      dJointAttach(weld, body_->body(model_->root_link), nullptr);
-      dJointSetFixed(weld);
-    }
+    body_ = world.add_robot(*model_, index, root, q);
+    if (placement.fixed_base) body_->fix_to_world();
     servos_ = std::make_unique<ServoBank>(*body_, devices_, world.settings().step);
     if (!placement.devices.empty()) {
       imu_.emplace(*body_, devices_.imu,

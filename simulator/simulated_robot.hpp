@@ -44,6 +44,8 @@ class SimulatedRobot : public hal::HardwareLink {
 
   const model::RobotModel& model() const { return *model_; }
   const RobotBody& body() const { return *body_; }
+  // Mutable access for what moves the bodies from outside: pushes, the teleport, tests.
+  RobotBody& mutable_body() { return *body_; }
   const DeviceDescription& devices() const { return devices_; }
   const RobotPlacement& placement() const { return placement_; }
   // The zero errors <calibration> drew for this seed, by joint (empty without one).

@@ -53,7 +53,7 @@ std::unique_ptr<Simulation> Simulation::from_file(const std::string& path,
 }
 
 void Simulation::build() {
-  auto world = std::make_unique<PhysicsWorld>(scene_.physics, scene_.ground);
+  auto world = make_physics_world(scene_.physics, scene_.ground);
   for (const auto& b : scene_.boxes) world->add_static_box(b);
   for (size_t i = 0; i < scene_.uneven.size(); ++i) {
     const auto& u = scene_.uneven[i];
@@ -138,10 +138,7 @@ void Simulation::step() {
   const double t = time();
   for (const ActivePush& p : pushes_) {
     if (t < p.start - 1e-12 || t >= p.end - 1e-12) continue;
-    const auto& body = robots_[p.robot]->body();
-    const Eigen::Vector3d at = p.at - body.model().links[p.link].inertial.com;
-    dBodyAddForceAtRelPos(body.body(p.link), p.force.x(), p.force.y(), p.force.z(), at.x(), at.y(),
-                          at.z());
+    robots_[p.robot]->mutable_body().add_force(p.link, p.force, p.at);
   }
   for (auto& r : robots_) r->before_physics_step();
   check_inputs();
@@ -166,14 +163,13 @@ void Simulation::run_for(double seconds, const std::function<void()>& after_step
   }
 }
 
-// What ODE is about to integrate: every force and torque on a robot body finite and bounded. A
-// runaway is reported here, before ODE's own assertions could abort the process.
+// What the engine is about to integrate: every force and torque on a robot body finite and bounded.
+// A runaway is reported here, before an engine's own assertions could abort the process.
 void Simulation::check_inputs() const {
   for (const auto& r : robots_) {
     const auto& body = r->body();
     for (int l = 0; l < body.link_count(); ++l) {
-      const dReal* f = dBodyGetForce(body.body(l));
-      const dReal* t = dBodyGetTorque(body.body(l));
+      const auto [f, t] = body.queued_load(l);
       for (int k = 0; k < 3; ++k)
         if (!(std::abs(f[k]) <= kMaxBodyLoad && std::abs(t[k]) <= kMaxBodyLoad)) {
           std::ostringstream msg;
@@ -190,9 +186,9 @@ void Simulation::check_finite() const {
   for (const auto& r : robots_) {
     const auto& body = r->body();
     for (int l = 0; l < body.link_count(); ++l) {
-      const dReal* p = dBodyGetPosition(body.body(l));
-      const dReal* v = dBodyGetLinearVel(body.body(l));
-      const dReal* w = dBodyGetAngularVel(body.body(l));
+      const Eigen::Vector3d p = body.link_com(l);
+      const Eigen::Vector3d v = body.link_com_velocity(l);
+      const Eigen::Vector3d w = body.link_angular_velocity(l);
       const char* what = nullptr;
       for (int k = 0; k < 3 && !what; ++k) {
         if (!std::isfinite(p[k]) || !std::isfinite(v[k]) || !std::isfinite(w[k]))
@@ -218,7 +214,6 @@ struct Fnv {
     const auto* c = static_cast<const unsigned char*>(p);
     for (size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
   }
-  void reals(const dReal* v, int n) { bytes(v, sizeof(dReal) * n); }
 };
 }  // namespace
 
@@ -226,14 +221,7 @@ std::uint64_t Simulation::state_hash() const {
   Fnv f;
   f.bytes(&steps_, sizeof steps_);
   for (const auto& r : robots_) {
-    const auto& body = r->body();
-    for (int l = 0; l < body.link_count(); ++l) {
-      dBodyID b = body.body(l);
-      f.reals(dBodyGetPosition(b), 3);
-      f.reals(dBodyGetQuaternion(b), 4);
-      f.reals(dBodyGetLinearVel(b), 3);
-      f.reals(dBodyGetAngularVel(b), 3);
-    }
+    r->body().visit_state([&f](const double* v, int n) { f.bytes(v, sizeof(double) * n); });
     const hal::SensorFrame& s = r->latest_sensors();
     f.bytes(s.position.data(), sizeof(double) * s.position.size());
     f.bytes(s.current.data(), sizeof(double) * s.current.size());

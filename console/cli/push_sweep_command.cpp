@@ -16,8 +16,6 @@
 #include <ostream>
 #include <sstream>
 
-#include <ode/ode.h>
-
 #include "behaviours/balance/modules/balance_modules.hpp"
 #include "behaviours/balance/modules/balance_representations.hpp"
 #include "behaviours/balance/strategy_classifier.hpp"

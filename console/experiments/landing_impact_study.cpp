@@ -30,7 +30,7 @@ double floor_force_on(const sim::PhysicsWorld& world, int robot, int link) {
     const bool is_a = c.a->robot == robot && c.a->link == link;
     const bool is_b = c.b->robot == robot && c.b->link == link;
     if (is_a == is_b) continue;
-    f += is_a ? c.feedback->f1[2] : c.feedback->f2[2];
+    f += is_a ? c.force_on_a.z() : c.force_on_b.z();
   }
   return f;
 }

@@ -59,10 +59,9 @@ void FsrDevice::accumulate(const RobotBody& body, const PhysicsWorld& world) {
     const bool is_a = c.a->robot == robot_ && c.a->link == link_;
     const bool is_b = c.b->robot == robot_ && c.b->link == link_;
     if (is_a == is_b) continue;  // not this foot, or the foot against itself
-    const dReal* f = is_a ? c.feedback->f1 : c.feedback->f2;
-    const double fn = Eigen::Vector3d(f[0], f[1], f[2]).dot(normal);
+    const double fn = (is_a ? c.force_on_a : c.force_on_b).dot(normal);
     if (fn <= 0) continue;  // a sensor only measures pressing
-    const Eigen::Vector3d p = inv * Eigen::Vector3d(c.position[0], c.position[1], c.position[2]);
+    const Eigen::Vector3d p = inv * c.position;
     load_sum_ += fn;
     moment_sum_ += fn * p.head<2>();
   }

@@ -14,10 +14,7 @@ ImuDevice::ImuDevice(const RobotBody& body, const ImuSpec& spec, NoiseSource noi
 }
 
 Eigen::Vector3d ImuDevice::point_velocity(const RobotBody& body, const Eigen::Vector3d& at) const {
-  const Eigen::Vector3d p = body.link_pose(link_) * at;
-  dVector3 v;
-  dBodyGetPointVel(body.body(link_), p.x(), p.y(), p.z(), v);
-  return Eigen::Vector3d(v[0], v[1], v[2]);
+  return body.point_velocity(link_, body.link_pose(link_) * at);
 }
 
 void ImuDevice::begin_frame(const RobotBody& body) {
@@ -31,8 +28,7 @@ ImuReading ImuDevice::sample(const RobotBody& body, double dt, const Eigen::Vect
   const Eigen::Vector3d v_end = point_velocity(body, spec_.accelerometer_at);
   const Eigen::Vector3d a = (v_end - v_start_) / dt;
   const Eigen::Vector3d specific_force = rt * (a - gravity) + spec_.accel_bias;
-  const dReal* w = dBodyGetAngularVel(body.body(link_));
-  const Eigen::Vector3d gyro = rt * Eigen::Vector3d(w[0], w[1], w[2]) + spec_.gyro_bias;
+  const Eigen::Vector3d gyro = rt * body.link_angular_velocity(link_) + spec_.gyro_bias;
   ImuReading r;
   for (int i = 0; i < 3; ++i) {
     const double an = noise_on ? noise_.gaussian(spec_.accel_noise) : 0.0;

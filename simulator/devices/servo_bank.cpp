@@ -31,8 +31,7 @@ ServoBank::ServoBank(const RobotBody& body, const DeviceDescription& devices, do
 void ServoBank::apply(RobotBody& body) {
   for (size_t s = 0; s < joints_.size(); ++s) {
     const int j = joints_[s];
-    dJointID id = body.joint(j);
-    if (dJointGetType(id) != dJointTypeHinge) continue;
+    if (!body.is_hinge(j)) continue;
     const MotorSpec& m = *motors_[s];
     const ServoCommand& c = commands_[s];
     const double q = body.joint_position(j);
@@ -46,7 +45,7 @@ void ServoBank::apply(RobotBody& body) {
       const double err = target - q;
       bool engaged = true;
       if (m.backlash > 0) {
-        engaged = apply_with_backlash(id, s, q, target);
+        engaged = apply_with_backlash(body, s, q, target);
       } else if (m.spring > 0) {
         // ODE's soft motor row: torque = spring * (err - step * speed) - damping * speed, the
         // spring taken at the end of the step so that stiff springs stay stable.
@@ -59,27 +58,25 @@ void ServoBank::apply(RobotBody& body) {
               c.stiffness > 0 ? std::clamp(error_integral_[s] + err * step_, -limit, limit) : 0;
           integral_torque = m.integral * error_integral_[s];
         }
-        dJointSetHingeParam(id, dParamVel, (m.spring * err + integral_torque) * softness);
-        dJointSetHingeParam(id, dParamCFM, softness);
+        body.set_motor_speed(j, (m.spring * err + integral_torque) * softness);
+        body.set_motor_softness(j, softness);
       } else {
-        dJointSetHingeParam(id, dParamVel,
-                            std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed));
+        body.set_motor_speed(j, std::clamp(m.gain * err, -m.no_load_speed, m.no_load_speed));
       }
-      dJointSetHingeParam(id, dParamFMax,
-                          engaged ? std::clamp(c.stiffness, 0.0, 1.0) * max_torque : 0.0);
+      body.set_motor_max_torque(j, engaged ? std::clamp(c.stiffness, 0.0, 1.0) * max_torque : 0.0);
       applied_torque_[s] = 0;
     } else {
-      dJointSetHingeParam(id, dParamFMax, 0);
+      body.set_motor_max_torque(j, 0);
       gear_angle_[s] = q;  // back-driven with the joint
       error_integral_[s] = 0;
       const double tau = std::clamp(c.torque, -max_torque, max_torque);
-      dJointAddHingeTorque(id, tau);
+      body.add_joint_torque(j, tau);
       applied_torque_[s] = tau;
     }
   }
 }
 
-bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, double target) {
+bool ServoBank::apply_with_backlash(RobotBody& body, std::size_t s, double q, double target) {
   const MotorSpec& m = *motors_[s];
   // The gear's output follows the command at the servo's speed; the joint sits in its play.
   double& gear = gear_angle_[s];
@@ -89,9 +86,8 @@ bool ServoBank::apply_with_backlash(dJointID id, std::size_t s, double q, double
   const double from_gear = q - gear;
   if (std::abs(from_gear) <= half) return false;               // free within the play
   const double tooth = gear + std::copysign(half, from_gear);  // the flank the joint pushes on
-  dJointSetHingeParam(
-      id, dParamVel,
-      std::clamp(gear_speed + m.gain * (tooth - q), -2 * m.no_load_speed, 2 * m.no_load_speed));
+  body.set_motor_speed(joints_[s], std::clamp(gear_speed + m.gain * (tooth - q),
+                                              -2 * m.no_load_speed, 2 * m.no_load_speed));
   return true;
 }
 

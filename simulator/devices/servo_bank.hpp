@@ -33,7 +33,7 @@ class ServoBank {
   // The joint's true angle minus what the servo and its encoder take it to be (rad).
   double offset(int servo) const { return offsets_[servo]; }
 
-  // Before each physics step: set the ODE motors / torques from the commands.
+  // Before each physics step: set the joint motors / torques from the commands.
   void apply(RobotBody& body);
   // After each physics step: accumulate motor torque for the current estimate.
   void measure(const RobotBody& body);
@@ -42,7 +42,7 @@ class ServoBank {
 
  private:
   // Velocity servo through gear play: returns false while the joint is free within the play.
-  bool apply_with_backlash(dJointID id, std::size_t servo, double q, double target);
+  bool apply_with_backlash(RobotBody& body, std::size_t servo, double q, double target);
 
   double step_;
   std::vector<int> joints_;  // model joint index per servo

@@ -3,10 +3,11 @@
 #include <GL/gl.h>
 #include <ode/ode.h>
 
+#include "robot/core/error.hpp"
 #include "simulator/render/gl_shapes.hpp"
 #include "simulator/render/offscreen_gl.hpp"
 #include "simulator/world/geom_info.hpp"
-#include "simulator/world/physics_world.hpp"
+#include "simulator/world/ode/ode_world.hpp"
 
 namespace stride::render {
 namespace {
@@ -128,8 +129,12 @@ RgbaImage WorldRenderer::render(const sim::PhysicsWorld& world, const CameraView
   glLoadMatrixd(camera.data());
   set_lights(lights);  // after the view matrix: light directions are in the world frame
 
-  draw_space(world.static_space(), view);
-  draw_space(world.robot_space(), view);
+  const auto* ode = dynamic_cast<const sim::OdeWorld*>(&world);
+  if (!ode)
+    throw Error(std::string("render: the ") + world.engine_name() +
+                " engine's world is not drawn (only the ode engine's is)");
+  draw_space(ode->static_space(), view);
+  draw_space(ode->robot_space(), view);
   return gl_->read();
 }
 

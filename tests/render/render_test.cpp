@@ -17,6 +17,7 @@
 #include "simulator/render/snapshot.hpp"
 #include "simulator/render/views.hpp"
 #include "simulator/render/world_renderer.hpp"
+#include "simulator/world/ode/ode_world.hpp"
 #include "simulator/world/physics_world.hpp"
 #include "tests/error_text.hpp"
 #include "tests/simulator/sim_test_util.hpp"
@@ -121,7 +122,7 @@ TEST(WorldRenderer, TheStandingNaoFillsItsProjectedHeight) {
   // The drawn extent is bracketed by the projections of the collision geometry's bounding
   // boxes: the lowest pixel is the front bottom edge of the soles, the highest the head's top.
   double bottom_px = 0, top_near = 1e9, top_far = 1e9;
-  const dSpaceID space = with_robot.world().robot_space();
+  const dSpaceID space = dynamic_cast<const sim::OdeWorld&>(with_robot.world()).robot_space();
   for (int i = 0; i < dSpaceGetNumGeoms(space); ++i) {
     dReal bb[6];
     dGeomGetAABB(dSpaceGetGeom(space, i), bb);

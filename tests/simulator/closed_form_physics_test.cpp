@@ -28,8 +28,8 @@ TEST(ClosedFormPhysics, FreeFallFollowsHalfGTSquared) {
 double pendulum_energy(const sim::Simulation& s) {
   const auto& body = s.robot(0).body();
   const int bob = body.model().link_index("bob");
-  const dReal* v = dBodyGetLinearVel(body.body(bob));
-  const dReal* w = dBodyGetAngularVel(body.body(bob));
+  const Eigen::Vector3d v = body.link_com_velocity(bob);
+  const Eigen::Vector3d w = body.link_angular_velocity(bob);
   const double m = 0.5, i = 0.0002;
   const double ke = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
                     0.5 * i * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
@@ -82,7 +82,7 @@ Slide slide_on_ramp(double mu) {
   auto sim = test::scene_from_text(xml);
   sim->run_for(0.2);  // settle onto the ramp
   const auto p0 = sim->robot(0).torso_pose();
-  const dReal* v = dBodyGetLinearVel(sim->robot(0).body().body(0));
+  const Eigen::Vector3d v = sim->robot(0).body().link_com_velocity(0);
   Slide s;
   s.v0 = std::hypot(v[0], v[2]);
   sim->run_for(1.0);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "simulator/teleport.hpp"
+#include "simulator/world/ode/ode_robot_body.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {
@@ -54,7 +55,7 @@ TEST(FootSlipMetrics, SlidingRobotCoversTheCoulombStoppingDistance) {
   auto sim = test::scene_from_text(stand_scene(mu));
   sim->run_for(0.5);  // settled, feet flat
   const double slip_before = sim->walk_metrics(0).result().foot_slip;
-  const auto& body = sim->robot(0).body();
+  const auto& body = dynamic_cast<const sim::OdeRobotBody&>(sim->robot(0).body());
   for (int l = 0; l < body.link_count(); ++l) {  // the whole robot moving forward at v0
     dBodySetLinearVel(body.body(l), v0, 0, 0);
     dBodySetAngularVel(body.body(l), 0, 0, 0);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "robot/hal/joint_id.hpp"
+#include "simulator/world/ode/ode_robot_body.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {
@@ -23,12 +24,13 @@ TEST(JointStops, InOdeOnlyWithinReach) {
   sim->run_for(0.01);
   const auto& robot = sim->robot(0);
   const auto& model = robot.model();
-  dJointID head = robot.body().joint(model.joint_index("HeadYaw"));  // at 0, 2.09 rad from both
+  const auto& body = dynamic_cast<const sim::OdeRobotBody&>(robot.body());
+  dJointID head = body.joint(model.joint_index("HeadYaw"));  // at 0, 2.09 rad from both
   EXPECT_TRUE(std::isinf(dJointGetHingeParam(head, dParamLoStop)));
   EXPECT_TRUE(std::isinf(dJointGetHingeParam(head, dParamHiStop)));
   // The elbow rolls stand at 0, beyond their range (-1.54, -0.035): their stops are in place.
   const int elbow = model.joint_index("LElbowRoll");
-  dJointID id = robot.body().joint(elbow);
+  dJointID id = body.joint(elbow);
   EXPECT_DOUBLE_EQ(dJointGetHingeParam(id, dParamLoStop), model.joints[elbow].lower);
   EXPECT_DOUBLE_EQ(dJointGetHingeParam(id, dParamHiStop), model.joints[elbow].upper);
 }
@@ -41,7 +43,7 @@ TEST(JointStops, ServoDrivenPastTheRangeEndsOnTheStop) {
   hal::ActuatorFrame cmd = robot.latest_commands();
   cmd.position[hal::index(JointId::LKneePitch)] = -1.0;  // far past it
   robot.write(cmd);
-  dJointID id = robot.body().joint(knee);
+  dJointID id = dynamic_cast<const sim::OdeRobotBody&>(robot.body()).joint(knee);
   sim->step();
   EXPECT_TRUE(std::isinf(dJointGetHingeParam(id, dParamLoStop)));  // 0.5 rad: out of reach
   sim->run_for(1.0);

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "simulator/world/ode_context.hpp"
-#include "simulator/world/plane_cull.hpp"
+#include "simulator/world/ode/ode_context.hpp"
+#include "simulator/world/ode/plane_cull.hpp"
 
 namespace stride::sim {
 namespace {

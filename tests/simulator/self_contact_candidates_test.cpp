@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "simulator/world/ode_context.hpp"
-#include "simulator/world/self_contact_candidates.hpp"
+#include "simulator/world/ode/ode_context.hpp"
+#include "simulator/world/ode/self_contact_candidates.hpp"
 
 namespace stride::sim {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "simulator/world/ode_context.hpp"
-#include "simulator/world/static_geom_grid.hpp"
+#include "simulator/world/ode/ode_context.hpp"
+#include "simulator/world/ode/static_geom_grid.hpp"
 
 namespace stride::sim {
 namespace {

@@ -1,6 +1,6 @@
-#include "simulator/world/self_contact_candidates.hpp"
+#include "simulator/world/ode/self_contact_candidates.hpp"
 
-#include "simulator/world/static_geom_grid.hpp"
+#include "simulator/world/ode/static_geom_grid.hpp"
 
 namespace stride::sim {
 

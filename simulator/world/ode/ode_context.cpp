@@ -1,4 +1,4 @@
-#include "simulator/world/ode_context.hpp"
+#include "simulator/world/ode/ode_context.hpp"
 
 #include <ode/ode.h>
 

@@ -1,4 +1,4 @@
-#include "simulator/world/static_geom_grid.hpp"
+#include "simulator/world/ode/static_geom_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
