@@ -17,3 +17,5 @@ find_package(PNG REQUIRED)
 find_library(READLINE_LIBRARY readline REQUIRED)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
+# Optional: OpenMPI for sweeps across machines (Debian libopenmpi-dev, openmpi-bin).
+find_package(MPI COMPONENTS C)

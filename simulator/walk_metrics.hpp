@@ -4,8 +4,10 @@
 // each double support, from the measured joint angles) and from the simulator's ground truth,
 // average step length, torso pitch/roll extremes, whether it fell, and how the feet behaved while
 // they carried load (sliding, tilting on an edge): the ground truth behind a distance.
+#include <array>
 #include <string>
 
+#include "robot/framework/reflect.hpp"
 #include "simulator/simulated_robot.hpp"
 
 namespace stride::sim {
@@ -13,6 +15,16 @@ namespace stride::sim {
 // Which way the torso first passed kTipAngle (pitch > 0 leans forward, roll > 0 leans right).
 enum class Tip { None, Forward, Backward, Right, Left };
 const char* tip_name(Tip t);  // "none", "forward", ...
+}  // namespace stride::sim
+
+template <>
+struct stride::EnumNames<stride::sim::Tip> {
+  static constexpr std::string_view type_name = "Tip";
+  static constexpr std::array<std::string_view, 5> names{"none", "forward", "backward", "right",
+                                                         "left"};
+};
+
+namespace stride::sim {
 
 // The torso tilt the Ch. 4 experiments count as lost balance even without a fall (teams use
 // 0.4-0.6 rad as a fall threshold on the real NAO).
@@ -38,6 +50,27 @@ struct WalkMetricsResult {
   double foot_tilted_time = 0;  // s, time a loaded foot was tilted by more than kTiltedFoot
   double foot_spin = 0;         // rad, summed |net yaw turn| of each foot per stance (Sec. 4.4)
   double foot_spin_max = 0;     // rad, the largest turn of one foot in one stance
+
+  // The list that names a run report's walk fields and a sweep's `walk.<field>` keys.
+  static constexpr std::string_view kTypeName = "WalkMetricsResult";
+  static constexpr auto fields() {
+    using W = WalkMetricsResult;
+    return std::make_tuple(
+        field("steps", &W::steps), field("fk_distance", &W::fk_distance, "m"),
+        field("true_distance", &W::true_distance, "m"),
+        field("torso_distance", &W::torso_distance, "m"), field("duration", &W::duration, "s"),
+        field("fk_speed", &W::fk_speed, "m/s"), field("true_speed", &W::true_speed, "m/s"),
+        field("mean_step_length", &W::mean_step_length, "m"),
+        field("pitch_min", &W::pitch_min, "rad"), field("pitch_max", &W::pitch_max, "rad"),
+        field("roll_min", &W::roll_min, "rad"), field("roll_max", &W::roll_max, "rad"),
+        field("yaw_min", &W::yaw_min, "rad"), field("yaw_max", &W::yaw_max, "rad"),
+        field("fell", &W::fell), field("fell_at", &W::fell_at, "s"), field("tipped", &W::tipped),
+        field("tipped_at", &W::tipped_at, "s"), field("foot_slip", &W::foot_slip, "m"),
+        field("foot_slip_net_x", &W::foot_slip_net_x, "m"),
+        field("foot_tilt_max", &W::foot_tilt_max, "rad"),
+        field("foot_tilted_time", &W::foot_tilted_time, "s"),
+        field("foot_spin", &W::foot_spin, "rad"), field("foot_spin_max", &W::foot_spin_max, "rad"));
+  }
 };
 
 // A loaded sole tilted beyond this rocks on an edge rather than standing flat (1.15 deg; the

@@ -1,6 +1,6 @@
 #include "console/cli/ensemble_arguments.hpp"
 
-#include "console/experiments/worker_pool.hpp"
+#include "console/sweep/executor.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -19,7 +19,7 @@ sim::EnsembleSpec read_ensemble_spec(ArgumentReader& a, const std::string& comma
 }
 
 int read_jobs(ArgumentReader& a, const std::string& command) {
-  if (!a.has("--jobs")) return experiments::default_jobs();
+  if (!a.has("--jobs")) return sweep::hardware_jobs();
   const std::uint64_t n = a.unsigned_integer("--jobs");
   if (n < 1 || n > 256) throw Error("stride " + command + ": --jobs: expected 1..256");
   return static_cast<int>(n);

@@ -19,6 +19,7 @@ int landing_main(Args args, std::ostream& out, std::ostream& err);
 int converge_main(Args args, std::ostream& out, std::ostream& err);
 int robot_main(Args args, std::ostream& out, std::ostream& err);
 int lola_main(Args args, std::ostream& out, std::ostream& err);
+int sweep_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -65,11 +66,19 @@ const std::vector<Subcommand>& subcommands() {
        "pattern [--preset P] [--set name=value ...] [--conventional] --csv out.csv [--plots dir]: "
        "walking pattern (Ch. 3) offline",
        pattern_main},
+      {"sweep",
+       "sweep <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet] [--seeds N] "
+       "[--scenes dir] [--set target=value ...] [--only column=a,b ...] [--no-plots] [--mpi]: "
+       "the runs of a sweep file (scenes x factors x seeds) on local worker processes, or on MPI "
+       "ranks under mpirun/srun; one CSV row per run, tallies printed",
+       sweep_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains [--seeds N] [--jobs N] "
-       "[--out dir] [--scenes dir] [--no-plots] [--set Module.field=value ...] [--cases a,b]: "
-       "Ch. 4 experiments (--jobs: walks at once, default all hardware threads; --set: a module "
-       "parameter in every walk; --cases: posture cases to run, e.g. hip or none_fast)",
+       "[--out dir] [--scenes dir] [--sweeps dir] [--resume] [--quiet] [--no-plots] "
+       "[--set Module.field=value ...] [--cases a,b]: Ch. 4 experiments, the sweep files "
+       "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
+       "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "
+       "hip or none_fast)",
        experiment_main},
   };
   return table;

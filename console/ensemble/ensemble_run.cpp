@@ -1,16 +1,13 @@
 #include "console/ensemble/ensemble_run.hpp"
 
 #include <chrono>
-#include <type_traits>
 
-#include "console/experiments/worker_pool.hpp"
 #include "console/session/sim_session.hpp"
+#include "console/sweep/ordered_jobs.hpp"
 #include "robot/core/error.hpp"
-#include "robot/framework/byte_io.hpp"
+#include "robot/framework/binary.hpp"
 
 namespace stride::ensemble {
-
-static_assert(std::is_trivially_copyable_v<MemberOutcome>);
 
 MemberOutcome run_member(const EnsembleRequest& r, int k) {
   sim::SceneDescription scene = sim::parse_scene_file(r.scene, r.physics);
@@ -34,17 +31,13 @@ std::vector<std::vector<MemberOutcome>> run_ensembles(const std::vector<Ensemble
     results[i].resize(static_cast<std::size_t>(requests[i].spec.members));
     for (int k = 0; k < requests[i].spec.members; ++k) members.emplace_back(i, k);
   }
-  experiments::run_in_workers(
+  sweep::run_jobs(
       members.size(), jobs,
       [&](std::size_t j) {
-        std::string bytes;
-        ByteWriter(bytes).put(run_member(requests[members[j].first], members[j].second));
-        return bytes;
+        return to_binary(run_member(requests[members[j].first], members[j].second));
       },
       [&](std::size_t j, std::string&& bytes) {
-        ByteReader in(bytes);
-        results[members[j].first][static_cast<std::size_t>(members[j].second)] =
-            in.get<MemberOutcome>();
+        from_binary(results[members[j].first][static_cast<std::size_t>(members[j].second)], bytes);
         return true;
       },
       [&](std::size_t j) {

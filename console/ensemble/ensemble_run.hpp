@@ -2,6 +2,7 @@
 // Runs one scene as an ensemble of perturbed starts (sim::EnsembleSpec), optionally under a
 // solver setting set over its <physics>, and keeps each member's walk figures (robot 0).
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "simulator/scene/scene_parser.hpp"
@@ -21,6 +22,14 @@ struct MemberOutcome {
   sim::WalkMetricsResult walk;  // robot 0, over the whole run
   double sim_seconds = 0;
   double wall_seconds = 0;  // the member's own run, in its worker
+
+  // Reflected: a member comes back from its worker in the framework's binary encoding.
+  static constexpr std::string_view kTypeName = "MemberOutcome";
+  static constexpr auto fields() {
+    return std::make_tuple(field("walk", &MemberOutcome::walk),
+                           field("sim_seconds", &MemberOutcome::sim_seconds, "s"),
+                           field("wall_seconds", &MemberOutcome::wall_seconds, "s"));
+  }
 };
 
 // Member k of `r`: the scene loaded with r.physics, start k applied, run with its controllers.

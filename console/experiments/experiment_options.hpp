@@ -1,6 +1,6 @@
 #pragma once
-// What every `stride experiment <name>` takes: where the scenes are, where results go, how many
-// noise seeds to repeat with, and where its table is printed.
+// What every `stride experiment <name>` takes: where the sweep files and scenes are, where
+// results go, how many noise seeds to repeat with, and how many walks run at once.
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -12,19 +12,22 @@
 namespace stride::experiments {
 
 struct ExperimentOptions {
-  std::string scenes_dir = "scenes/experiments";
-  std::string out_dir;  // empty: print the table only
-  int seeds = 0;        // 0: the experiment's own default
-  bool plots = true;    // PNGs next to the CSVs (needs gnuplot)
-  int jobs = 1;         // walks run at once (worker processes); results do not depend on it
+  std::string sweeps_dir = "scenes/experiments";  // <name>.sweep.xml
+  std::string scenes_dir;                         // empty: the sweep file's own scenes
+  std::string out_dir;                            // empty: print the tables only
+  int seeds = 0;                                  // 0: the experiment's own default
+  bool plots = true;                              // PNGs next to the CSVs (needs gnuplot)
+  int jobs = 0;                                   // walks at once; 0: every hardware thread
+  bool resume = false, quiet = false;
   // --set Module.field=value, in order: {module, "field=value"} applied to every walk.
   std::vector<std::pair<std::string, std::string>> parameters;
   // --cases a,b: the posture cases to run, each a scene name or a strategy (none|hip|ankle);
   // empty: all nine.
   std::vector<std::string> cases;
+  std::string command;  // the command line, for a sweep's manifest
 };
 
-// scenes_dir/<name>.xml; throws stride::Error naming the path when it does not exist.
+// The scene <name>.xml the kalman study walks: in scenes_dir if given, else in sweeps_dir.
 std::string scene_path(const ExperimentOptions& o, const std::string& name);
 
 // Creates out_dir if results are to be written; returns false when out_dir is empty.

@@ -53,17 +53,17 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
 
   std::vector<Eigen::Vector2d> online, imu;
   std::vector<double> gyro_pitch, true_pitch_rate, gyro_roll, true_roll_rate;
-  for (const auto& row : rec.trace.rows) {
-    online.push_back({row[col(Trace::est_pitch)], row[col(Trace::est_roll)]});
-    imu.push_back({row[col(Trace::imu_pitch)], row[col(Trace::imu_roll)]});
-    gyro_pitch.push_back(row[col(Trace::gyro_pitch)]);
-    gyro_roll.push_back(row[col(Trace::gyro_roll)]);
-    true_pitch_rate.push_back(row[col(Trace::true_pitch_rate)]);
-    true_roll_rate.push_back(row[col(Trace::true_roll_rate)]);
+  for (const console::WalkFrame& f : rec.frames) {
+    online.push_back({f.est_pitch, f.est_roll});
+    imu.push_back({f.imu_pitch, f.imu_roll});
+    gyro_pitch.push_back(f.gyro_pitch);
+    gyro_roll.push_back(f.gyro_roll);
+    true_pitch_rate.push_back(f.true_pitch_rate);
+    true_roll_rate.push_back(f.true_roll_rate);
   }
   out << "Torso state during the Table 4.2 walk (hip strategy, uneven floor), against ground "
          "truth; "
-      << rec.trace.rows.size() << " frames; walk " << fixed(walk.speed, 4) << " m/s, "
+      << rec.frames.size() << " frames; walk " << fixed(walk.speed, 4) << " m/s, "
       << (walk.fell ? "FELL (scores are over the fall too)" : "did not fall") << "\n";
   out << "gyro vs d/dt(true angle) correlation: pitch "
       << fixed(correlation(gyro_pitch, true_pitch_rate), 3) << ", roll "
@@ -102,8 +102,8 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
 
   // The rates the D terms of Eqs. 4.8-4.9 act on, with the gyro offset started either way.
   std::vector<Eigen::Vector2d> online_rate;
-  for (const auto& row : rec.trace.rows)
-    online_rate.push_back({row[col(Trace::est_pitch_rate)], row[col(Trace::est_roll_rate)]});
+  for (const console::WalkFrame& f : rec.frames)
+    online_rate.push_back({f.est_pitch_rate, f.est_roll_rate});
   std::vector<std::vector<std::string>> rate_rows;
   auto add_rate = [&](const std::string& what, const std::vector<Eigen::Vector2d>& estimate) {
     const EstimateScore s = score_estimate(estimate, series.truth_rate, rec.period, first);
@@ -131,7 +131,7 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
     for (std::size_t i = 0; i < settings.size(); ++i)
       fig.columns.push_back("pitch_" + std::to_string(i + 1));
     for (std::size_t k = 0; k < series.y.size(); ++k) {
-      std::vector<double> row{rec.trace.rows[k][col(Trace::t)], series.truth[k][0], series.y[k][0]};
+      std::vector<double> row{rec.frames[k].t, series.truth[k][0], series.y[k][0]};
       for (const auto& e : estimates) row.push_back(e[k][0]);
       fig.add_row(std::move(row));
     }
@@ -147,7 +147,7 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
                series_of(0, 4), "t [s]", "pitch [rad]");
     write_plot(o, fig, "kalman_fig4.2_r", "Torso pitch estimates, Q fixed (Fig. 4.2)", "t",
                series_of(4, 8), "t [s]", "pitch [rad]");
-    plot::write_csv(o.out_dir + "/kalman_walk_trace.csv", rec.trace);
+    plot::write_csv(o.out_dir + "/kalman_walk_trace.csv", trace_table(rec));
   }
   return 0;
 }

@@ -13,19 +13,19 @@ KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start
   KalmanSeries s;
   s.period = r.period;
   // (roll, pitch) rates as the gyro orders them
-  auto gyro = [](const std::vector<double>& row) {
-    return Eigen::Vector2d(row[col(Trace::gyro_roll)], row[col(Trace::gyro_pitch)]);
+  auto gyro = [](const console::WalkFrame& f) {
+    return Eigen::Vector2d(f.gyro_roll, f.gyro_pitch);
   };
-  if (r.trace.rows.empty()) return s;
+  if (r.frames.empty()) return s;
   Eigen::Vector2d offset =
-      behaviours::initial_gyro_offset(gyro(r.trace.rows.front()), start_at_first_sample);
-  for (const auto& row : r.trace.rows) {
-    const Eigen::Vector2d measured = gyro(row);
+      behaviours::initial_gyro_offset(gyro(r.frames.front()), start_at_first_sample);
+  for (const console::WalkFrame& f : r.frames) {
+    const Eigen::Vector2d measured = gyro(f);
     offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);  // Eqs. 4.1-4.2
     const Eigen::Vector2d rate = behaviours::calibrated_gyro_rate(measured, offset);  // 4.3-4.4
-    s.y.push_back({row[col(Trace::imu_pitch)], row[col(Trace::imu_roll)], rate.y(), rate.x()});
-    s.truth.push_back({row[col(Trace::true_pitch)], row[col(Trace::true_roll)]});
-    s.truth_rate.push_back({row[col(Trace::true_pitch_rate)], row[col(Trace::true_roll_rate)]});
+    s.y.push_back({f.imu_pitch, f.imu_roll, rate.y(), rate.x()});
+    s.truth.push_back({f.true_pitch, f.true_roll});
+    s.truth_rate.push_back({f.true_pitch_rate, f.true_roll_rate});
   }
   return s;
 }

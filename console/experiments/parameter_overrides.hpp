@@ -1,6 +1,6 @@
 #pragma once
 // `stride experiment ... --set Module.field=value`: module parameters changed in every walk an
-// experiment runs, before the experiment's own settings (so a sweep's value still wins).
+// experiment runs, before the experiment's own settings (so the experiment's value still wins).
 #include <string>
 #include <utility>
 

@@ -1,69 +1,18 @@
 #pragma once
-// One experiment walk recorded frame by frame: the scene's controller runs as usual and, after
-// each control frame, a row of what the thesis' Ch. 4 figures show is appended (reference and
-// modified hip/ankle angles, torso inclination estimated and true, waist velocity planned and
-// true, CoP from the FSRs in the world frame, shoulder pitch, knee currents, IMU inputs).
+// One experiment walk recorded frame by frame: the scene's controller runs as usual (timed
+// changes included) and a WalkFrame observer keeps a row per control frame of what the thesis'
+// Ch. 4 figures show. For a study over many walks use a sweep file (console/sweep); this is for
+// one walk whose whole trace is wanted (the Kalman filter rerun offline, tests).
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "console/plot/gnuplot_plot.hpp"
+#include "console/session/walk_frame.hpp"
 #include "simulator/walk_metrics.hpp"
 
 namespace stride::experiments {
-
-// Trace columns, in this order (row[col(Trace::x)]).
-enum class Trace : int {
-  t,          // s, simulation time
-  pattern_t,  // s, time since the walking pattern started (negative while standing)
-  hip_pitch_ref_l,
-  hip_pitch_mod_l,
-  hip_roll_ref_l,
-  hip_roll_mod_l,
-  hip_pitch_ref_r,
-  hip_pitch_mod_r,
-  hip_roll_ref_r,
-  hip_roll_mod_r,
-  ankle_pitch_ref_l,
-  ankle_pitch_mod_l,
-  ankle_roll_ref_l,
-  ankle_roll_mod_l,
-  ankle_pitch_ref_r,
-  ankle_pitch_mod_r,
-  ankle_roll_ref_r,
-  ankle_roll_mod_r,
-  est_pitch,
-  est_roll,
-  est_pitch_rate,
-  est_roll_rate,  // TorsoState (NaN without estimator)
-  true_pitch,
-  true_roll,
-  true_pitch_rate,
-  true_roll_rate,  // simulator ground truth
-  imu_pitch,
-  imu_roll,
-  gyro_pitch,
-  gyro_roll,  // raw IMU angles and rates
-  waist_v_ref,
-  waist_v,  // m/s forward: pattern and true torso
-  torso_x,
-  torso_y,
-  feet_x,  // m, world
-  cop_x,
-  cop_y,  // m, world CoP from the FSRs (NaN airborne)
-  zmp_ref_x,
-  zmp_ref_y,  // m, pattern ZMP (Eq. 3.16)
-  shoulder_pitch_l,
-  shoulder_pitch_r,  // rad, commanded
-  knee_current_l,
-  knee_current_r,  // A
-  count
-};
-constexpr int col(Trace c) {
-  return static_cast<int>(c);
-}
-const std::vector<std::string>& trace_columns();
 
 struct WalkSetup {
   std::string scene;
@@ -74,12 +23,15 @@ struct WalkSetup {
 };
 
 struct WalkRecording {
-  plot::Table trace;
-  sim::WalkMetricsResult metrics;  // whole run, the simulator's own accounting
-  double walk_duration = 0;        // s, the pattern's duration
-  double period = 0;               // s, control period
-  std::string walk_module;         // PatternWalk or ConventionalWalk
+  std::vector<console::WalkFrame> frames;  // one per control frame
+  sim::WalkMetricsResult metrics;          // whole run, the simulator's own accounting
+  double walk_duration = 0;                // s, the pattern's duration
+  double period = 0;                       // s, control period
+  std::string walk_module;                 // PatternWalk or ConventionalWalk
 };
+
+// The frames as a table whose columns are WalkFrame's field names.
+plot::Table trace_table(const WalkRecording& r);
 
 // Loads and runs the scene for start delay + walk + settle; throws stride::Error for a bad
 // scene, provider or parameter (the message names it).

@@ -1,5 +1,6 @@
 #include "console/interpreter/command_table.hpp"
 
+#include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/physical_limits.hpp"
@@ -15,7 +16,7 @@ bool is_framework_key(std::string_view key) {
 
 bool is_value_key(std::string_view key) {
   if (is_framework_key(key)) return true;
-  for (std::string_view prefix : {"sim.", "robot.", "log.", "provider:"})
+  for (std::string_view prefix : {"sim.", "robot.", "log.", "provider:", "sweep."})
     if (key.starts_with(prefix) && key.size() > prefix.size()) return true;
   return false;
 }
@@ -24,9 +25,9 @@ namespace {
 
 void need_key(const std::string& key, bool framework_only) {
   if (framework_only ? !is_framework_key(key) : !is_value_key(key))
-    throw Error(
-        "'" + key + "' is not a key (representation:X" +
-        std::string(framework_only ? " or module:X)" : ", module:X, sim.*, robot.*, log.*)"));
+    throw Error("'" + key + "' is not a key (representation:X" +
+                std::string(framework_only ? " or module:X)"
+                                           : ", module:X, sim.*, robot.*, log.*, sweep.*)"));
 }
 
 void check_run(const Words& a) {
@@ -120,6 +121,9 @@ void check_expect(const Words& a) {
   parse_op(a[1]);
   if (a.size() == 4 && parse_number(a[3], "tolerance") < 0) throw Error("tolerance: expected >= 0");
 }
+void check_sweep(const Words& a) {
+  parse_sweep_arguments(a);
+}
 void check_wait(const Words& a) {
   if (a[0] != "until") throw Error("expected 'until', got '" + a[0] + "'");
   if (a.size() == 5) throw Error("give 'timeout <seconds>' after the value");
@@ -186,6 +190,10 @@ const std::vector<CommandSpec>& command_table() {
       {"wait", "wait until <key> <op> <value> [timeout <seconds>]", "run until a condition holds",
        4, 6, check_wait},
       {"call", "call <file.con>", "run a script", 1, 1, nullptr},
+      {"sweep", "sweep <file.xml> [jobs N] [out <dir>] [seeds N] [resume] [overwrite] [quiet]",
+       "run a sweep file (as `stride sweep`); its tallies become sweep.<tally>.<column>[<group>] "
+       "keys",
+       1, 10, check_sweep},
       {"echo", "echo <text>", "print text", 0, -1, nullptr},
       {"quit", "quit", "leave the console", 0, 0, nullptr},
   };

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "console/interpreter/command_parser.hpp"
+#include "console/interpreter/sweep_command.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/target/target.hpp"
 
@@ -59,6 +60,8 @@ class Interpreter {
   void video(const std::vector<std::string>& a);
   void expect(const std::vector<std::string>& a);
   void wait_until(const std::vector<std::string>& a);
+  // A key's value: sweep.* keys from the last sweep, every other one from the target.
+  std::string value(const std::string& key);
 
   Target& target_;
   std::ostream& out_;
@@ -78,6 +81,7 @@ class Interpreter {
 
   std::chrono::steady_clock::time_point run_wall_start_;
   double run_sim_start_ = 0;
+  SweepCommand sweep_;
 };
 
 }  // namespace stride::console

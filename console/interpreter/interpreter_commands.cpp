@@ -29,7 +29,11 @@ void Interpreter::get(const std::vector<std::string>& a) {
     out_ << text << (text.ends_with('\n') ? "" : "\n");
     return;
   }
-  out_ << target_.get(a[0]) << "\n";
+  out_ << value(a[0]) << "\n";
+}
+
+std::string Interpreter::value(const std::string& key) {
+  return key.starts_with("sweep.") ? sweep_.value(key) : target_.get(key);
 }
 
 void Interpreter::module_request(const std::vector<std::string>& a) {
@@ -198,7 +202,7 @@ double tolerance_of(const std::vector<std::string>& a, std::size_t at, Op op) {
 
 void Interpreter::expect(const std::vector<std::string>& a) {
   const Op op = parse_op(a[1]);
-  const std::string actual = target_.get(a[0]);
+  const std::string actual = value(a[0]);
   if (!compare(actual, op, a[2], tolerance_of(a, 3, op)))
     throw Error("expect " + a[0] + " " + a[1] + " " + a[2] + " failed: actual " + actual);
   out_ << "ok " << a[0] << " = " << actual << "\n";

@@ -58,17 +58,32 @@ void SimSession::attach_controllers() {
   runtimes_.clear();  // before the links they use
   packet_links_ = std::move(links);
   runtimes_ = std::move(runtimes);
+  observers_.resize(sim_->robot_count());
   for (int i = 0; i < sim_->robot_count(); ++i) {
     Runtime* rt = runtimes_[i].get();
-    if (!rt) continue;
+    const FrameObserver* observer = &observers_[i];
+    if (!rt) {
+      sim_->set_controller(i, [observer](sim::SimulatedRobot& robot) {
+        if (*observer) (*observer)(robot);
+      });
+      continue;
+    }
     sim::Simulation* sim = sim_.get();
-    sim_->set_controller(i, [rt, sim, schedule = ControllerSchedule(
-                                          sim_->scene().robots[i].controller.changes)](
-                                sim::SimulatedRobot&) mutable {
-      schedule.apply_due(*rt, sim->time());
-      rt->step();
-    });
+    sim_->set_controller(
+        i, [rt, sim, observer,
+            schedule = ControllerSchedule(sim_->scene().robots[i].controller.changes)](
+               sim::SimulatedRobot& robot) mutable {
+          schedule.apply_due(*rt, sim->time());
+          rt->step();
+          if (*observer) (*observer)(robot);
+        });
   }
+}
+
+void SimSession::set_frame_observer(int robot, FrameObserver observer) {
+  if (robot < 0 || robot >= static_cast<int>(observers_.size()))
+    throw Error("no robot " + std::to_string(robot) + " in this scene");
+  observers_[robot] = std::move(observer);
 }
 
 void SimSession::route_through_lola_packets(int robot) {

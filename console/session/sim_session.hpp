@@ -2,6 +2,7 @@
 // A loaded scene with its controllers: the Simulation plus one Runtime per robot that has a
 // <controller>, stepped together. Console commands and `stride run` act on this.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,12 +29,17 @@ class SimSession {
   const ModuleRegistry& registry() const { return registry_; }
   RuntimeConfig runtime_config(int robot) const;
 
-  // Rebuilds world and controllers from the same description.
+  // Rebuilds world and controllers from the same description (observers are kept).
   void reset();
 
   // From now on (also after reset()) robot `i`'s controller talks to it through LoLA's packets
   // (sim::LolaCodecLink): float32 values, LoLA's units and clock, as over the socket.
   void route_through_lola_packets(int robot);
+
+  // Called at every control frame of robot `i`, after its controller (timed changes, then the
+  // runtime's step) ran: how recorders and sweeps watch a run without replacing its controller.
+  using FrameObserver = std::function<void(sim::SimulatedRobot&)>;
+  void set_frame_observer(int robot, FrameObserver observer);
 
  private:
   void attach_controllers();
@@ -44,6 +50,7 @@ class SimSession {
   std::vector<std::unique_ptr<hal::HardwareLink>> packet_links_;  // per robot, or null
   std::vector<bool> through_packets_;
   std::vector<std::unique_ptr<Runtime>> runtimes_;
+  std::vector<FrameObserver> observers_;  // per robot; empty: none
 };
 
 }  // namespace stride::console

@@ -1,5 +1,6 @@
-// Every scene shipped under scenes/ (robot descriptions aside) loads, builds its world and its
-// controllers, and runs, so a broken experiment scene shows here rather than in a sweep.
+// Every scene shipped under scenes/ (robot descriptions and sweep files aside) loads, builds its
+// world and its controllers, and runs, so a broken experiment scene shows here rather than in a
+// sweep.
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -20,7 +21,9 @@ std::vector<fs::path> shipped_scenes() {
   const fs::path root = fs::path(STRIDE_SOURCE_DIR) / "scenes";
   for (const auto& e : fs::recursive_directory_iterator(root)) {
     const fs::path rel = fs::relative(e.path(), root);
-    if (e.path().extension() == ".xml" && *rel.begin() != "robots") scenes.push_back(e.path());
+    const bool sweep = e.path().filename().string().ends_with(".sweep.xml");  // shipped_sweeps
+    if (e.path().extension() == ".xml" && !sweep && *rel.begin() != "robots")
+      scenes.push_back(e.path());
   }
   std::sort(scenes.begin(), scenes.end());
   return scenes;

@@ -51,12 +51,11 @@ TEST(KalmanStudy, FilterFollowsANoiseFreeConstantRateAndMismatchedSizesAreAnErro
 TEST(KalmanStudy, GyroOffsetStartsAtTheFirstSampleOrAtZero) {
   WalkRecording r;
   r.period = 0.01;
-  r.trace.columns = trace_columns();
   for (int k = 0; k < 100; ++k) {
-    std::vector<double> row(trace_columns().size(), 0.0);
-    row[col(Trace::gyro_pitch)] = -0.314;  // the thesis' -18 deg/s, torso still
-    row[col(Trace::gyro_roll)] = 0.02;
-    r.trace.add_row(std::move(row));
+    console::WalkFrame f;
+    f.gyro_pitch = -0.314;  // the thesis' -18 deg/s, torso still
+    f.gyro_roll = 0.02;
+    r.frames.push_back(f);
   }
   const KalmanSeries settled = kalman_series(r);
   const KalmanSeries from_zero = kalman_series(r, 0.001, false);

@@ -1,10 +1,13 @@
 // `stride experiment --set Module.field=value`: parsed strictly, put ahead of an experiment's own
-// parameters (a sweep's value wins), and a bad module or field is an error naming the scene.
+// settings (the sweep file's value wins), and a bad module or field is an error naming the scene.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "console/cli/arguments.hpp"
-#include "console/experiments/gains_experiment.hpp"
 #include "console/experiments/parameter_overrides.hpp"
+#include "console/experiments/walk_recording.hpp"
+#include "console/sweep/sweep_request.hpp"
 #include "robot/core/error.hpp"
 #include "tests/error_text.hpp"
 
@@ -32,15 +35,21 @@ TEST(ParameterOverrides, MalformedTextIsNamed) {
 }
 
 TEST(ParameterOverrides, GoAheadOfTheExperimentsOwnSettings) {
-  ExperimentOptions o;
-  o.scenes_dir = std::string(STRIDE_SOURCE_DIR) + "/scenes/experiments";
-  o.parameters = {{"HipStrategy", "kp_pitch=9"}, {"ArmSwing", "gain_scale=1"}};
-  const WalkSetup w = gains_walk(o, "hip", 0.4, -0.05, 3);
-  ASSERT_EQ(w.parameters.size(), 3u);
-  EXPECT_EQ(w.parameters[0], o.parameters[0]);
-  EXPECT_EQ(w.parameters[1], o.parameters[1]);
-  EXPECT_EQ(w.parameters[2].first, "HipStrategy");  // the sweep's kp_pitch, applied last
-  EXPECT_EQ(w.parameters[2].second.rfind("kp_pitch=0.4 ", 0), 0u);
+  sweep::SweepRequest r;
+  r.file = std::string(STRIDE_SOURCE_DIR) + "/scenes/experiments/gains.sweep.xml";
+  r.settings = {{"HipStrategy.kp_pitch", "9"}, {"ArmSwing.gain_scale", "1"}};
+  const sweep::Sweep s(sweep::request_spec(r), false);
+  const std::vector<sweep::Setting>& first = s.plan().runs.at(0).settings;  // hip, K_p 0
+  ASSERT_GE(first.size(), 3u);
+  EXPECT_EQ(first[0].target, "HipStrategy.kp_pitch");
+  EXPECT_EQ(first[0].value, "9");
+  EXPECT_EQ(first[1].target, "ArmSwing.gain_scale");
+  // The sweep's own kp_pitch comes later, so it is the one the walk keeps.
+  const auto own = std::find_if(first.begin() + 2, first.end(), [](const sweep::Setting& x) {
+    return x.target == "HipStrategy.kp_pitch";
+  });
+  ASSERT_NE(own, first.end());
+  EXPECT_EQ(own->value, "0");
 }
 
 TEST(ParameterOverrides, UnknownFieldFailsBeforeTheWalkNamingSceneAndField) {

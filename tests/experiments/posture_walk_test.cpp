@@ -9,8 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "console/cli/subcommand.hpp"
-#include "console/experiments/posture_experiment.hpp"
+#include "console/experiments/experiment_list.hpp"
 #include "console/experiments/walk_recording.hpp"
+#include "console/sweep/sweep_parser.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::experiments {
@@ -65,13 +66,18 @@ TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
 }
 
-TEST(PostureCases, SelectionNamesScenesOrStrategiesInTableOrder) {
-  EXPECT_EQ(selected_posture_cases({}).size(), 9u);
-  EXPECT_EQ(selected_posture_cases({"hip"}), (std::vector<std::size_t>{3, 4, 5}));
-  EXPECT_EQ(selected_posture_cases({"ankle", "none_fast"}), (std::vector<std::size_t>{2, 6, 7, 8}));
-  EXPECT_EQ(selected_posture_cases({"hip_medium", "hip"}), (std::vector<std::size_t>{3, 4, 5}));
-  EXPECT_THROW(selected_posture_cases({"hi"}), Error);  // a prefix must be a whole strategy
-  EXPECT_THROW(selected_posture_cases({"hip_medium", "walk"}), Error);
+TEST(PostureCases, SelectionNamesScenesOrStrategies) {
+  const sweep::Sweep posture(sweep::parse_sweep_file(std::string(STRIDE_SOURCE_DIR) +
+                                                     "/scenes/experiments/posture.sweep.xml"),
+                             false);
+  using Levels = std::vector<std::string>;
+  EXPECT_EQ(posture_case_levels(posture, {"hip"}), (Levels{"hip_slow", "hip_medium", "hip_fast"}));
+  EXPECT_EQ(posture_case_levels(posture, {"ankle", "none_fast"}),
+            (Levels{"ankle_slow", "ankle_medium", "ankle_fast", "none_fast"}));
+  EXPECT_EQ(posture_case_levels(posture, {"hip_medium", "hip"}),
+            (Levels{"hip_medium", "hip_slow", "hip_fast"}));
+  EXPECT_THROW(posture_case_levels(posture, {"hi"}), Error);  // a prefix must be a whole strategy
+  EXPECT_THROW(posture_case_levels(posture, {"hip_medium", "walk"}), Error);
 }
 
 TEST(ExperimentCommand, CasesIsCheckedBeforeAnyWalk) {
@@ -84,8 +90,10 @@ TEST(ExperimentCommand, CasesIsCheckedBeforeAnyWalk) {
   EXPECT_EQ(run({"posture", "--cases", ","}, err), 1);
   EXPECT_NE(err.find("--cases: expected"), std::string::npos) << err;
   // Only the chosen cases' scenes must exist: a directory with none of them names hip_slow.
-  EXPECT_EQ(run({"posture", "--cases", "hip", "--scenes", "/nonexistent"}, err), 1);
-  EXPECT_NE(err.find("hip_slow.xml' not found"), std::string::npos) << err;
+  const std::string no_cases = std::string(STRIDE_SOURCE_DIR) + "/scenes";
+  EXPECT_EQ(run({"posture", "--cases", "hip", "--scenes", no_cases}, err), 1);
+  EXPECT_NE(err.find(no_cases + "/hip_slow.xml"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
 }
 
 }  // namespace

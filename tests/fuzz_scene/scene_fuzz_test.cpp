@@ -1,39 +1,23 @@
 // The scene and URDF parsers under hostile input, in every (sanitized) test run: the committed
 // corpus plus deterministic mutations of it must parse or fail with one stride::Error line.
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "tests/fuzz_scene/scene_fuzz_target.hpp"
 #include "tests/fuzz_support/corpus.hpp"
+#include "tests/fuzz_support/mutation.hpp"
 
 namespace stride {
 namespace {
 
-std::string mutate(std::string s, std::mt19937_64& rng) {
-  static const char* kTokens[] = {"<",     ">",   "/>",    "\"",     "=",
-                                  "nan",   "-1",  "1e308", "<robot", "<include file=\"x.xml\"/>",
-                                  "&amp;", "deg", "mm",    " ",      "\0"};
-  const int edits = 1 + static_cast<int>(rng() % 4);
-  for (int k = 0; k < edits && !s.empty(); ++k) {
-    const size_t at = rng() % s.size();
-    switch (rng() % 4) {
-      case 0:
-        s[at] = static_cast<char>(rng() % 256);
-        break;
-      case 1:
-        s.erase(at, 1 + rng() % 16);
-        break;
-      case 2:
-        s.insert(at, kTokens[rng() % std::size(kTokens)]);
-        break;
-      case 3:
-        s.resize(at);
-        break;
-    }
-  }
-  return s;
+std::string mutate(const std::string& s, std::mt19937_64& rng) {
+  static const char* const kTokens[] = {
+      "<",     ">",   "/>", "\"", "=", "nan", "-1", "1e308", "<robot", "<include file=\"x.xml\"/>",
+      "&amp;", "deg", "mm", " ",  "\0"};
+  return test::mutate(s, rng, kTokens);
 }
 
 TEST(SceneFuzz, CorpusAndMutationsParseOrFailWithOneLine) {

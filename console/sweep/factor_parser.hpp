@@ -1,0 +1,25 @@
+#pragma once
+// The parts of a sweep file that say which runs there are: <set>, <factor> with its levels,
+// <grid> and <sample> blocks, <seeds>.
+#include <cstdint>
+#include <vector>
+
+#include "console/sweep/sweep_spec.hpp"
+#include "robot/core/xml_element.hpp"
+
+namespace stride::sweep {
+
+// <set target="..." value="..."/>
+Setting parse_set(const XmlElement& e);
+// <factor name target values|range format> or with <level> children, and per-level <set> and
+// <column> templates.
+Factor parse_factor(const XmlElement& e);
+// <grid> (children <set>, <column>, <factor>) or <sample method count seed> (<set>, <range>).
+Block parse_block(const XmlElement& e);
+// <seeds from to> | <seeds values> | <seeds count>
+std::vector<std::uint64_t> parse_seeds(const XmlElement& e);
+
+// Texts listed in an attribute: split at commas when there is one, otherwise at white space.
+std::vector<std::string> split_list(const std::string& text);
+
+}  // namespace stride::sweep

@@ -1,0 +1,137 @@
+// One run of a sweep: build its world, watch every control frame of robot 0 (after its
+// controller, so the scene's timed changes still apply), stop at the marks where values are
+// read, and turn what was seen into the record columns.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "console/session/walk_frame.hpp"
+#include "console/sweep/run_keys.hpp"
+#include "console/sweep/run_session.hpp"
+#include "console/sweep/summary_stat.hpp"
+#include "console/sweep/sweep_compiled.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::sweep {
+namespace {
+
+// Where the marks fall in this run (s of simulation time; walk marks as the pattern plans them).
+struct Marks {
+  std::optional<console::WalkPatternInfo> walk;
+  double end = 0;
+
+  double absolute(const TimePoint& p) const {
+    if (p.mark == "start") return p.offset;
+    if (p.mark == "end") return end + p.offset;
+    const console::WalkPatternInfo& w = pattern(p.mark);
+    return w.start_delay + (p.mark == "walk_end" ? w.duration : 0.0) + p.offset;
+  }
+  const console::WalkPatternInfo& pattern(const std::string& mark) const {
+    if (!walk)
+      throw Error(mark +
+                  ": robot 0 walks no pattern (WalkingJointRequest from PatternWalk or "
+                  "ConventionalWalk)");
+    return *walk;
+  }
+};
+
+WindowBound bound_of(const TimePoint& p, const Marks& m) {
+  if (p.mark == "walk_start" || p.mark == "walk_end")
+    return {true, (p.mark == "walk_end" ? m.pattern(p.mark).duration : 0.0) + p.offset};
+  return {false, m.absolute(p)};
+}
+
+std::string cell_text(const Cell& c) {
+  if (const double* d = std::get_if<double>(&c)) return number_text(*d);
+  return std::get<std::string>(c);
+}
+
+void append_trace_row(std::string& csv, const std::vector<int>& keys, const std::vector<Cell>& v) {
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    csv += (i ? "," : "") + cell_text(v[static_cast<std::size_t>(keys[i])]);
+  csv += '\n';
+}
+
+}  // namespace
+
+std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& c,
+                                     const RunPlan& run, std::string& trace_csv) {
+  const SweepSpec& spec = sweep.spec();
+  auto session = build_run_session(spec, run);
+  auto& sim = session->simulation();
+  if (sim.robot_count() == 0) throw Error(scene_path_of(spec, run) + ": the scene has no robot");
+  std::optional<console::WalkFrameObserver> walk;
+  if (c.walk_frame) walk.emplace(*session);
+  Marks marks;
+  marks.walk = console::walk_pattern_info(*session);
+  if (spec.until.mark == "end") throw Error("the run's length cannot be relative to its end");
+  marks.end = marks.absolute(spec.until);
+
+  FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys);
+  std::vector<WindowedStat> summaries;
+  for (const SummarySpec& s : spec.record.summaries)
+    summaries.emplace_back(bound_of(s.from, marks), bound_of(s.to, marks), s.to_inclusive,
+                           SummaryStat(s.stat, s.threshold));
+  // Traces of this run: which ones, and from when.
+  const std::vector<Cell> plan_values = plan_cells(run);
+  const Sweep::Compiled::Trace* trace = nullptr;
+  std::optional<WindowBound> trace_from;
+  for (std::size_t i = 0; i < c.traces.size() && !trace; ++i)
+    if (!c.traces[i].where || c.traces[i].where->truth(plan_values)) {
+      trace = &c.traces[i];
+      trace_from = bound_of(spec.record.traces[i].from, marks);
+      for (std::size_t k = 0; k < spec.record.traces[i].columns.size(); ++k)
+        trace_csv += (k ? "," : "") + spec.record.traces[i].columns[k].first;
+      trace_csv += '\n';
+    }
+
+  session->set_frame_observer(0, [&](sim::SimulatedRobot& robot) {
+    if (walk) walk->observe(robot);
+    keys.sample();
+    const double t = robot.latest_sensors().time;
+    const double pattern_t = walk ? walk->frame().pattern_t : 0.0;
+    for (std::size_t i = 0; i < summaries.size(); ++i) {
+      WindowedStat& s = summaries[i];
+      if (!s.admits(t, pattern_t)) continue;
+      if (c.summaries[i].until && c.summaries[i].until->truth(keys.values())) {
+        s.stop();
+        continue;
+      }
+      s.add(t, std::get<double>(keys.values()[static_cast<std::size_t>(c.summaries[i].key)]));
+    }
+    if (trace && trace_from->of(t, pattern_t) >= trace_from->value)
+      append_trace_row(trace_csv, trace->keys, keys.values());
+  });
+
+  // Run to each time a value is read, then to the end.
+  std::map<std::int64_t, std::vector<std::size_t>> reads;  // physics step -> values read there
+  const double step = sim.scene().physics.step;
+  const auto step_of = [&](double t) { return static_cast<std::int64_t>(std::llround(t / step)); };
+  const std::int64_t end_step = step_of(marks.end);
+  for (std::size_t i = 0; i < spec.record.values.size(); ++i) {
+    const std::int64_t at = step_of(marks.absolute(spec.record.values[i].at));
+    if (at < 0 || at > end_step)
+      throw Error("value '" + spec.record.values[i].name + "' is read at " +
+                  number_text(at * step) + " s, outside the run (0 to " + number_text(marks.end) +
+                  " s)");
+    reads[at].push_back(i);
+  }
+  reads[end_step];
+  std::vector<Cell> values(spec.record.values.size());
+  for (const auto& [at, which] : reads) {
+    while (static_cast<std::int64_t>(sim.steps()) < at) sim.step();
+    for (std::size_t i : which)
+      values[i] = read_key(*session, walk ? &*walk : nullptr, spec.record.values[i].key);
+  }
+
+  std::vector<Cell> row = plan_values;
+  row.insert(row.end(), values.begin(), values.end());
+  const double period = sim.robot(0).period();
+  for (const WindowedStat& s : summaries) row.push_back(s.result(period));
+  for (const Expression& e : c.derived) row.push_back(e.evaluate(row));
+  std::vector<std::string> cells;
+  for (std::size_t i = plan_values.size(); i < row.size(); ++i) cells.push_back(cell_text(row[i]));
+  return cells;
+}
+
+}  // namespace stride::sweep

@@ -1,0 +1,18 @@
+#pragma once
+// Sweep XML -> SweepSpec, with the conventions of scene files: SI units unless a unit is written,
+// every attribute declared, every error one line "file:line: <element>: what was expected".
+// The format is described in scenes/experiments/README.md ("Sweep files").
+#include <string>
+
+#include "console/sweep/sweep_spec.hpp"
+
+namespace stride::sweep {
+
+SweepSpec parse_sweep_file(const std::string& path);
+// `text` as if it were the file `virtual_path` (scenes resolve from its directory).
+SweepSpec parse_sweep_text(const std::string& text, const std::string& virtual_path);
+
+// "walk_end+50ms", "2s", "end", "walk_start - 0.5 s"; throws std::invalid_argument.
+TimePoint parse_time_point(const std::string& text);
+
+}  // namespace stride::sweep

@@ -1,0 +1,7 @@
+// libFuzzer entry for the sweep engine's decoders: tests/fuzz_sweep/run_sweep_fuzz.sh builds it.
+#include "tests/fuzz_sweep/sweep_fuzz_target.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  stride::test::sweep_fuzz_input(data, size);
+  return 0;
+}
