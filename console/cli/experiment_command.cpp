@@ -22,7 +22,7 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.resume = a.flag("--resume");
     o.quiet = a.flag("--quiet");
     const std::string name =
-        a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing|gains");
+        a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push");
     if (a.has("--seeds")) {
       const std::uint64_t n = a.unsigned_integer("--seeds");
       if (n < 1 || n > 1000) throw Error("stride experiment: --seeds: expected 1..1000");

@@ -73,7 +73,7 @@ const std::vector<Subcommand>& subcommands() {
        "ranks under mpirun/srun; one CSV row per run, tallies printed",
        sweep_main},
       {"experiment",
-       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains [--seeds N] [--jobs N] "
+       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push [--seeds N] [--jobs N] "
        "[--out dir] [--scenes dir] [--sweeps dir] [--resume] [--quiet] [--no-plots] "
        "[--set Module.field=value ...] [--cases a,b]: Ch. 4 experiments, the sweep files "
        "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "

@@ -15,7 +15,7 @@
 namespace stride::experiments {
 namespace {
 
-constexpr std::array kSweeps = {"posture", "knee-energy", "fastest", "arm-swing", "gains"};
+constexpr std::array kSweeps = {"posture", "knee-energy", "fastest", "arm-swing", "gains", "push"};
 
 }  // namespace
 

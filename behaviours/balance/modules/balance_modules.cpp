@@ -9,6 +9,7 @@
 #include "behaviours/balance/hip_strategy.hpp"
 #include "behaviours/balance/lqr_balance.hpp"
 #include "behaviours/balance/modules/balance_actuation.hpp"
+#include "behaviours/balance/modules/balance_outlook.hpp"
 #include "behaviours/balance/modules/balance_representations.hpp"
 #include "behaviours/balance/modules/com_state_estimator.hpp"
 #include "behaviours/stand/stand.hpp"
@@ -208,6 +209,7 @@ class LqrBalance final : public StandingBalance {
 
 void register_balance_modules(ModuleRegistry& registry) {
   register_com_state_estimator(registry);
+  register_balance_outlook(registry);
   registry.add<AnkleBalance>("AnkleBalance");
   registry.add<HipBalance>("HipBalance");
   registry.add<CombinedBalance>("CombinedBalance");

@@ -6,6 +6,7 @@
 //   CombinedBalance  ankle ZMP at the sole border + bang-bang hip (Eqs. 7.31-7.37)
 //   LqrBalance       LQR on [x, theta, xdot, thetadot] -> [x_zmp, tau_h] (Eqs. 7.38-7.39)
 // All require ComState, BalanceModel (ComStateEstimator), JointSensorData and FrameInfo.
+// BalanceOutlook (balance_outlook.hpp) predicts which of them would recover the robot.
 #include <Eigen/Core>
 
 #include "robot/framework/module_registry.hpp"
