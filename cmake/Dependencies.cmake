@@ -19,3 +19,17 @@ find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
 # Optional: OpenMPI for sweeps across machines (Debian libopenmpi-dev, openmpi-bin).
 find_package(MPI COMPONENTS C)
+# Header and library found directly: Debian's mujocoConfig.cmake (2.2.2) names a qhull include
+# directory that the C API does not need.
+if(STRIDE_MUJOCO)
+  find_path(MUJOCO_INCLUDE_DIR mujoco/mujoco.h)
+  find_library(MUJOCO_LIBRARY mujoco)
+  if(MUJOCO_INCLUDE_DIR AND MUJOCO_LIBRARY)
+    add_library(stride_mujoco INTERFACE)
+    target_include_directories(stride_mujoco SYSTEM INTERFACE ${MUJOCO_INCLUDE_DIR})
+    target_link_libraries(stride_mujoco INTERFACE ${MUJOCO_LIBRARY})
+  else()
+    message(STATUS "MuJoCo not found (libmujoco-dev): building without engine=\"mujoco\"")
+    set(STRIDE_MUJOCO OFF)
+  endif()
+endif()

@@ -84,6 +84,11 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
   if (placement.auto_height) root.translation().z() -= lowest_point(*model_, q, root);
 
   try {
+    if (world.settings().engine == PhysicsSettings::Engine::Mujoco)
+      for (const MotorSpec& m : devices_.motors)
+        if (m.spring > 0)
+          throw Error("motor '" + m.name +
+                      "': a compliant (spring) servo has no counterpart on engine=\"mujoco\"");
     body_ = world.add_robot(*model_, index, root, q);
     if (placement.fixed_base) body_->fix_to_world();
     servos_ = std::make_unique<ServoBank>(*body_, devices_, world.settings().step);

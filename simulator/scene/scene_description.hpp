@@ -17,6 +17,10 @@
 namespace stride::sim {
 
 struct PhysicsSettings {
+  // ode (default) or mujoco, the optional second engine (STRIDE_MUJOCO).
+  enum class Engine { Ode, Mujoco } engine = Engine::Ode;
+  std::string file;  // where <physics> was written (empty: defaults), for engine errors
+  int line = 0;
   double step = 0.001;  // s
   enum class Solver { Exact, Iterative } solver = Solver::Iterative;
   // Iterative solver only. Walking studies state 20 (README "Solver settings").

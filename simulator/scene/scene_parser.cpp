@@ -136,12 +136,13 @@ class Parser {
   void physics(const XmlElement& e) {
     physics_seen_ = true;
     set_physics_over(e);
-    e.allow_only({"step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp", "contact_cfm",
-                  "contact_stiffness", "contact_damping", "contact_spring_per", "max_contacts",
-                  "gravity", "seed"});
+    e.allow_only({"engine", "step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp",
+                  "contact_cfm", "contact_stiffness", "contact_damping", "contact_spring_per",
+                  "max_contacts", "gravity", "seed"});
     no_children(e);
     once(e);
     PhysicsSettings& p = out_.physics;
+    engine(e, p);
     p.step = e.number_or("step", p.step, Dimension::Time);
     if (p.step <= 0 || p.step > 0.02) e.fail_attr("step", "expected a time in (0, 20 ms]");
     p.solver = e.choice_or("solver", {"exact", "iterative"}, 1) == 0
@@ -163,6 +164,35 @@ class Parser {
     p.seed = e.seed_or("seed", p.seed);
   }
 
+  static constexpr const char* kOdeOnly[] = {"sor",
+                                             "erp",
+                                             "cfm",
+                                             "contact_erp",
+                                             "contact_cfm",
+                                             "contact_stiffness",
+                                             "contact_damping",
+                                             "contact_spring_per",
+                                             "max_contacts"};
+
+  // engine="mujoco" needs the build to have it, and keeps to what MuJoCo can express here.
+  static void engine(const XmlElement& e, PhysicsSettings& p) {
+    p.file = e.file();
+    p.line = e.line();
+    if (e.choice_or("engine", {"ode", "mujoco"}, 0) == 0) return;
+#ifndef STRIDE_HAVE_MUJOCO
+    e.fail_attr("engine",
+                "mujoco is not built into this stride (configure with libmujoco-dev "
+                "installed and -DSTRIDE_MUJOCO=ON)");
+#endif
+    p.engine = PhysicsSettings::Engine::Mujoco;
+    for (const char* ode_only : kOdeOnly)
+      if (e.has(ode_only))
+        e.fail_attr(ode_only,
+                    "an ODE setting; engine=\"mujoco\" uses MuJoCo's own contact "
+                    "model (solref/solimp defaults) and takes step, solver, iterations, "
+                    "gravity and seed");
+  }
+
   // Writes the attributes set over the scene into its element, dropping the ones they replace.
   void set_physics_over(const XmlElement& e) const {
     auto* raw = const_cast<XMLElement*>(e.raw());  // the parser owns the document
@@ -173,6 +203,8 @@ class Parser {
         if (soft) raw->DeleteAttribute(other);
       for (const char* other : {"contact_erp", "contact_cfm"})
         if (spring) raw->DeleteAttribute(other);
+      if (name == "engine" && value == "mujoco")  // the scene's ODE settings do not carry over
+        for (const char* other : kOdeOnly) raw->DeleteAttribute(other);
       raw->SetAttribute(name.c_str(), value.c_str());
     }
   }

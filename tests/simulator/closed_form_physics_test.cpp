@@ -1,5 +1,6 @@
-// The physics engine against closed-form mechanics: free fall, a pendulum, friction on a ramp.
+// The physics engines against closed-form mechanics: free fall, a pendulum, friction on a ramp.
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -12,8 +13,16 @@ namespace {
 
 constexpr double kG = 9.81;
 
-TEST(ClosedFormPhysics, FreeFallFollowsHalfGTSquared) {
-  auto sim = test::scene_from_text(R"(<scene><ground enabled="false"/>
+// Free fall, the pendulum and the ramp on every engine built in; the contact spring is ODE's.
+class ClosedFormPhysics : public ::testing::TestWithParam<std::string> {
+ protected:
+  std::unique_ptr<sim::Simulation> scene(const std::string& xml) const {
+    return test::scene_from_text(test::on_engine(xml, GetParam()));
+  }
+};
+
+TEST_P(ClosedFormPhysics, FreeFallFollowsHalfGTSquared) {
+  auto sim = scene(R"(<scene><ground enabled="false"/>
     <robot name="ball" urdf="sphere.urdf" xyz="0 0 10"/></scene>)");
   const double t = 1.0;
   sim->run_for(t);
@@ -36,8 +45,8 @@ double pendulum_energy(const sim::Simulation& s) {
   return ke + m * kG * body.link_com(bob).z();
 }
 
-TEST(ClosedFormPhysics, PendulumPeriodAndEnergyDrift) {
-  auto sim = test::scene_from_text(R"(<scene><ground enabled="false"/>
+TEST_P(ClosedFormPhysics, PendulumPeriodAndEnergyDrift) {
+  auto sim = scene(R"(<scene><ground enabled="false"/>
     <physics solver="exact"/>
     <robot name="p" urdf="pendulum.urdf" xyz="0 0 1" fixed="true"><joints swing="0.05"/></robot></scene>)");
   const double m = 0.5, d = 0.4, i_pivot = 0.0002 + m * d * d;
@@ -74,12 +83,12 @@ struct Slide {
   double distance = 0;  // travel down the slope in the following second
 };
 
-Slide slide_on_ramp(double mu) {
+Slide slide_on_ramp(double mu, const std::string& engine) {
   const std::string xml = R"(<scene><ground enabled="false"/>
     <ramp name="r" xyz="-1 0 0" length="3" width="1" slope="10deg" friction=")" +
                           std::to_string(mu) + R"("/>
     <robot name="b" urdf="block.urdf" xyz="-0.0035 0 0.202" rpy="0 -10deg 0"/></scene>)";
-  auto sim = test::scene_from_text(xml);
+  auto sim = test::scene_from_text(test::on_engine(xml, engine));
   sim->run_for(0.2);  // settle onto the ramp
   const auto p0 = sim->robot(0).torso_pose();
   const Eigen::Vector3d v = sim->robot(0).body().link_com_velocity(0);
@@ -91,23 +100,27 @@ Slide slide_on_ramp(double mu) {
   return s;
 }
 
-TEST(ClosedFormPhysics, BoxSlidesOnTenDegreeRampWithLowFriction) {
+TEST_P(ClosedFormPhysics, BoxSlidesOnTenDegreeRampWithLowFriction) {
   const double slope = 10 * std::numbers::pi / 180, mu = 0.1;
   const double a = kG * (std::sin(slope) - mu * std::cos(slope));  // 0.737 m/s^2
-  const Slide s = slide_on_ramp(mu);
+  const Slide s = slide_on_ramp(mu, GetParam());
   const double expected = s.v0 * 1.0 + 0.5 * a * 1.0 * 1.0;
   EXPECT_NEAR(s.distance, expected, 0.05 * expected);
 }
 
-TEST(ClosedFormPhysics, BoxHoldsOnTenDegreeRampWithHighFriction) {
-  const Slide s = slide_on_ramp(0.3);  // tan(10 deg) = 0.176 < 0.3: static friction holds
+TEST_P(ClosedFormPhysics, BoxHoldsOnTenDegreeRampWithHighFriction) {
+  const Slide s =
+      slide_on_ramp(0.3, GetParam());  // tan(10 deg) = 0.176 < 0.3: static friction holds
   EXPECT_LT(std::abs(s.distance), 0.002);
 }
 
 // A 1 kg ball set down on a contact spring k with damper c: a damped oscillator about the sink
 // m g / k, period 2 pi / (w sqrt(1 - z^2)), w = sqrt(k / m), z = c / (2 sqrt(k m)). The spring
 // acts below the world's 0.5 mm contact surface layer, where the ball starts at rest.
-TEST(ClosedFormPhysics, BallOnContactSpringSinksAndRingsAsAnOscillator) {
+INSTANTIATE_TEST_SUITE_P(Engines, ClosedFormPhysics, ::testing::ValuesIn(test::engines()),
+                         test::engine_name);
+
+TEST(ClosedFormOdeContact, BallOnContactSpringSinksAndRingsAsAnOscillator) {
   const double k = 2e4, c = 20, m = 1;
   auto sim = test::scene_from_text(R"(<scene>
     <physics solver="exact" contact_stiffness="2e4" contact_damping="20"/>
@@ -155,7 +168,7 @@ double block_sink(const std::string& spring_per, bool on_box) {
   return 0.0195 - sim->robot(0).torso_pose().z;  // half height less the surface layer
 }
 
-TEST(ClosedFormPhysics, ContactSpringPerBodyIsTheBodysWholeSpring) {
+TEST(ClosedFormOdeContact, ContactSpringPerBodyIsTheBodysWholeSpring) {
   const double sink = 2 * kG / 2e4;
   EXPECT_NEAR(block_sink("body", false), sink, 0.02 * sink);
   EXPECT_NEAR(block_sink("body", true), sink, 0.02 * sink);

@@ -1,4 +1,7 @@
 // Same binary + scene + seed = the same bits; another seed with noise = other bits.
+#include <memory>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "robot/core/error.hpp"
@@ -17,18 +20,26 @@ std::string scene(int seed) {
     <push robot="nao" body="torso" force="4 2 0" start="0.3" duration="0.1"/></scene>)";
 }
 
-std::uint64_t run_hash(int seed, double seconds) {
-  auto sim = test::scene_from_text(scene(seed));
-  sim->run_for(seconds);
-  return sim->state_hash();
-}
+// On every engine built in (ODE, MuJoCo).
+class Determinism : public ::testing::TestWithParam<std::string> {
+ protected:
+  std::unique_ptr<sim::Simulation> make(int seed) const {
+    return test::scene_from_text(test::on_engine(scene(seed), GetParam()));
+  }
+  std::uint64_t run_hash(int seed, double seconds) const {
+    auto sim = make(seed);
+    sim->run_for(seconds);
+    return sim->state_hash();
+  }
+};
 
-TEST(Determinism, TwoRunsGiveIdenticalHashes) {
+TEST_P(Determinism, TwoRunsGiveIdenticalHashes) {
   EXPECT_EQ(run_hash(5, 1.0), run_hash(5, 1.0));
 }
 
-TEST(Determinism, ResetInsideOneProcessReproducesTheRun) {
-  auto sim = test::scene_from_text(scene(5));
+TEST_P(Determinism, ResetInsideOneProcessReproducesTheRun) {
+  auto sim = make(5);
+  EXPECT_EQ(sim->world().engine_name(), GetParam());
   sim->run_for(1.0);
   const auto first = sim->state_hash();
   sim->reset();
@@ -37,11 +48,14 @@ TEST(Determinism, ResetInsideOneProcessReproducesTheRun) {
   EXPECT_EQ(sim->state_hash(), first);
 }
 
-TEST(Determinism, AnotherSeedWithNoiseGivesAnotherHash) {
+TEST_P(Determinism, AnotherSeedWithNoiseGivesAnotherHash) {
   EXPECT_NE(run_hash(5, 0.5), run_hash(6, 0.5));
 }
 
-TEST(Determinism, DivergingPhysicsStopsWithTheBodyNamed) {
+INSTANTIATE_TEST_SUITE_P(Engines, Determinism, ::testing::ValuesIn(test::engines()),
+                         test::engine_name);
+
+TEST(DeterminismOde, DivergingPhysicsStopsWithTheBodyNamed) {
   // The largest push a scene may give (1e7 N) on a light link makes the state explode; the run
   // must stop and say where.
   auto sim = test::scene_from_text(R"(<scene>

@@ -1,6 +1,7 @@
 // The simulated NAO: holds its standing pose with stiffness, collapses without, and its force
 // sensors weigh it.
 #include <cmath>
+#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -22,8 +23,15 @@ std::string stand_scene(double stiffness, bool noise) {
     </robot></scene>)";
 }
 
-TEST(NaoStanding, StiffRobotStandsTenSecondsWithLittleDrift) {
-  auto sim = test::scene_from_text(stand_scene(1.0, true));
+class NaoStanding : public ::testing::TestWithParam<std::string> {
+ protected:
+  std::unique_ptr<sim::Simulation> scene(double stiffness, bool noise) const {
+    return test::scene_from_text(test::on_engine(stand_scene(stiffness, noise), GetParam()));
+  }
+};
+
+TEST_P(NaoStanding, StiffRobotStandsTenSecondsWithLittleDrift) {
+  auto sim = scene(1.0, true);
   sim->run_for(0.5);  // let the contacts settle
   const auto p0 = sim->robot(0).torso_pose();
   sim->run_for(10.0);
@@ -36,16 +44,16 @@ TEST(NaoStanding, StiffRobotStandsTenSecondsWithLittleDrift) {
   EXPECT_GT(p1.z, 0.25);  // standing: hip-to-sole about 0.29 m with bent knees, torso 85 mm above
 }
 
-TEST(NaoStanding, LimpRobotCollapses) {
-  auto sim = test::scene_from_text(stand_scene(0.0, false));
+TEST_P(NaoStanding, LimpRobotCollapses) {
+  auto sim = scene(0.0, false);
   const auto p0 = sim->robot(0).torso_pose();
   sim->run_for(3.0);
   const auto p1 = sim->robot(0).torso_pose();
   EXPECT_LT(p1.z, p0.z - 0.1) << "without stiffness the torso must drop";
 }
 
-TEST(NaoStanding, FootSensorsWeighTheRobotAndCopLiesUnderTheFeet) {
-  auto sim = test::scene_from_text(stand_scene(1.0, false));
+TEST_P(NaoStanding, FootSensorsWeighTheRobotAndCopLiesUnderTheFeet) {
+  auto sim = scene(1.0, false);
   sim->run_for(2.0);
   const auto& robot = sim->robot(0);
   const double weight = robot.model().total_mass() * 9.81;
@@ -79,6 +87,9 @@ TEST(NaoStanding, FootSensorsWeighTheRobotAndCopLiesUnderTheFeet) {
   EXPECT_LT(cop.y(), lpose.translation().y() + nao::kSoleCentreYLeft + nao::kSoleWidth / 2);
   EXPECT_GT(cop.y(), rpose.translation().y() - nao::kSoleCentreYLeft - nao::kSoleWidth / 2);
 }
+
+INSTANTIATE_TEST_SUITE_P(Engines, NaoStanding, ::testing::ValuesIn(test::engines()),
+                         test::engine_name);
 
 }  // namespace
 }  // namespace stride

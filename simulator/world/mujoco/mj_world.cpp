@@ -1,0 +1,166 @@
+#include "simulator/world/mujoco/mj_world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "robot/core/error.hpp"
+#include "simulator/scene/scene_limits.hpp"
+#include "simulator/world/mujoco/mj_robot_body.hpp"
+
+namespace stride::sim {
+namespace {
+
+// Loads MJCF text through a one-file virtual file system: nothing touches the disk.
+mjModel* load_mjcf(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const char* name = "stride_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
+    throw Error("mujoco: cannot hold the scene in its virtual file system");
+  const int k = mj_findFileVFS(vfs.get(), name);
+  std::memcpy(vfs->filedata[k], xml.data(), xml.size());
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(name, vfs.get(), err, sizeof err);
+  mj_deleteVFS(vfs.get());
+  if (!m) throw Error(std::string("mujoco: the scene does not compile: ") + err);
+  return m;
+}
+
+}  // namespace
+
+MjWorld::MjWorld(const PhysicsSettings& physics, const GroundSettings& ground)
+    : PhysicsWorld(physics), ground_(ground) {
+  static_geoms_ = ground.enabled ? 1 : 0;
+}
+
+MjWorld::~MjWorld() {
+  if (data_) mj_deleteData(data_);
+  if (model_) mj_deleteModel(model_);
+}
+
+void MjWorld::add_static_box(const StaticBox& box) {
+  boxes_.push_back(box);
+  ++static_geoms_;
+  dirty_ = true;
+}
+
+std::unique_ptr<RobotBody> MjWorld::add_robot(const model::RobotModel& model, int robot_index,
+                                              const Eigen::Isometry3d& root_pose,
+                                              const model::JointVector& q) {
+  robots_.push_back({&model, robot_index, root_pose, false});
+  initial_q_.push_back(q);
+  compile();
+  return std::make_unique<MjRobotBody>(*this, model, static_cast<int>(robots_.size()) - 1);
+}
+
+void MjWorld::fix_robot(int slot) {
+  robots_[slot].fixed = true;
+  compile();
+}
+
+void MjWorld::compile() {
+  mjModel* m = load_mjcf(write_mjcf(physics_, ground_, boxes_, robots_, geoms_));
+  if (m->ngeom != static_cast<int>(geoms_.size())) {
+    mj_deleteModel(m);
+    throw Error("mujoco: the compiled scene's geoms do not match the written ones");
+  }
+  if (data_) mj_deleteData(data_);
+  if (model_) mj_deleteModel(model_);
+  model_ = m;
+  data_ = mj_makeData(model_);
+  layouts_.assign(robots_.size(), {});
+  for (size_t r = 0; r < robots_.size(); ++r) {
+    const model::RobotModel& rm = *robots_[r].model;
+    MjRobotLayout& lay = layouts_[r];
+    for (size_t l = 0; l < rm.links.size(); ++l)
+      lay.body.push_back(
+          mj_name2id(model_, mjOBJ_BODY, mjcf_link_name(robots_[r].robot_index, l).c_str()));
+    for (size_t j = 0; j < rm.joints.size(); ++j) {
+      const int id =
+          mj_name2id(model_, mjOBJ_JOINT, mjcf_joint_name(robots_[r].robot_index, j).c_str());
+      lay.jnt.push_back(id);
+      lay.qpos.push_back(id >= 0 ? model_->jnt_qposadr[id] : -1);
+      lay.dof.push_back(id >= 0 ? model_->jnt_dofadr[id] : -1);
+      if (id >= 0) data_->qpos[lay.qpos.back()] = initial_q_[r][j];
+    }
+    // A robot's joints are consecutive (bodies depth first, its free joint first).
+    lay.qpos_begin = lay.dof_begin = model_->nq;
+    for (int id = 0; id < model_->njnt; ++id) {
+      if (std::find(lay.body.begin(), lay.body.end(), model_->jnt_bodyid[id]) == lay.body.end())
+        continue;
+      const bool free = model_->jnt_type[id] == mjJNT_FREE;
+      lay.qpos_begin = std::min(lay.qpos_begin, model_->jnt_qposadr[id]);
+      lay.dof_begin = std::min(lay.dof_begin, model_->jnt_dofadr[id]);
+      lay.qpos_end = std::max(lay.qpos_end, model_->jnt_qposadr[id] + (free ? 7 : 1));
+      lay.dof_end = std::max(lay.dof_end, model_->jnt_dofadr[id] + (free ? 6 : 1));
+    }
+    if (lay.qpos_end == 0) lay.qpos_begin = lay.dof_begin = 0;
+  }
+  motors_.assign(model_->nv, {});
+  mj_forward(model_, data_);
+  dirty_ = false;
+}
+
+void MjWorld::apply_motor(int dof) {
+  const MjMotor& mo = motors_[dof];
+  model_->dof_damping[dof] = mo.gain;
+  data_->qfrc_applied[dof] = mo.servo_force + mo.extra_torque;
+}
+
+void MjWorld::step() {
+  if (dirty_) compile();
+  const double before = data_->time;
+  mj_step(model_, data_);
+  if (!(data_->time > before)) data_->warning[mjWARN_BADQACC].number += 1;  // it reset itself
+  for (int w : {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS})
+    if (data_->warning[w].number > 0) {
+      std::ostringstream msg;
+      msg << "physics diverged at t=" << data_->time
+          << " s: mujoco found a non-finite state and would reset it (try a smaller step)";
+      throw Error(msg.str());
+    }
+  for (int w : {mjWARN_CONTACTFULL, mjWARN_CNSTRFULL})
+    if (data_->warning[w].number > 0)
+      throw Error("physics: more contacts or constraints in one step than mujoco has room for (" +
+                  std::to_string(model_->nconmax) + " contacts, " + std::to_string(model_->njmax) +
+                  " rows; bodies piled into each other or a far too fine floor)");
+  // mj_step leaves positions and velocities one step ahead of the derived quantities; bring
+  // link poses and velocities up to date for sensors (contacts and their forces stay those of
+  // the step just taken).
+  mj_kinematics(model_, data_);
+  mj_comPos(model_, data_);
+  mj_comVel(model_, data_);
+  mju_zero(data_->xfrc_applied, 6 * model_->nbody);
+  for (int v = 0; v < model_->nv; ++v)
+    if (motors_[v].extra_torque != 0) {
+      motors_[v].extra_torque = 0;
+      apply_motor(v);
+    }
+  record_contacts();
+}
+
+void MjWorld::record_contacts() {
+  contacts_.clear();
+  for (int i = 0; i < data_->ncon && contacts_.size() < scene_limits::kMaxContacts; ++i) {
+    const mjContact& c = data_->contact[i];
+    if (c.efc_address < 0) continue;  // excluded or beyond the margin: no force
+    mjtNum local[6];
+    mj_contactForce(model_, data_, i, local);
+    // Contact frame rows: normal (from geom1 to geom2), then two tangents; the force acts on
+    // geom2 and its opposite on geom1.
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    for (int row = 0; row < 3; ++row)
+      for (int k = 0; k < 3; ++k) f[k] += c.frame[3 * row + k] * local[row];
+    ContactRecord rec;
+    rec.a = &geoms_[c.geom1];
+    rec.b = &geoms_[c.geom2];
+    rec.position = Eigen::Vector3d(c.pos[0], c.pos[1], c.pos[2]);
+    rec.force_on_a = -f;
+    rec.force_on_b = f;
+    contacts_.push_back(rec);
+  }
+}
+
+}  // namespace stride::sim

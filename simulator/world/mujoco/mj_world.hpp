@@ -1,0 +1,72 @@
+#pragma once
+// The MuJoCo world: the scene's static geoms and robots compiled into one mjModel (MJCF written
+// from our own parsed data, loaded through MuJoCo's virtual file system), stepped by mj_step.
+// Adding a robot recompiles; every robot then starts again from its initial configuration, which
+// only happens while a scene is being built.
+#include <memory>
+#include <vector>
+
+#include <mujoco/mujoco.h>
+
+#include "simulator/world/mujoco/mjcf_writer.hpp"
+#include "simulator/world/physics_world.hpp"
+
+namespace stride::sim {
+
+// Where one robot's links and joints sit in the compiled model.
+struct MjRobotLayout {
+  std::vector<int> body;             // mjModel body id per model link
+  std::vector<int> qpos, dof, jnt;   // per model joint; -1 for a fixed joint
+  int qpos_begin = 0, qpos_end = 0;  // the robot's slice of qpos
+  int dof_begin = 0, dof_end = 0;    // and of qvel
+};
+
+// A velocity motor on one dof (see MjRobotBody::set_motor_max_torque).
+struct MjMotor {
+  double speed = 0, max_torque = 0;
+  double gain = 0;          // N m s/rad, implicit in MuJoCo's Euler step as dof damping
+  double servo_force = 0;   // the explicit part this step
+  double extra_torque = 0;  // direct joint torque, cleared after each step
+};
+
+class MjWorld : public PhysicsWorld {
+ public:
+  MjWorld(const PhysicsSettings& physics, const GroundSettings& ground);
+  ~MjWorld() override;
+
+  const char* engine_name() const override { return "mujoco"; }
+  void add_static_box(const StaticBox& box) override;
+  std::unique_ptr<RobotBody> add_robot(const model::RobotModel& model, int robot_index,
+                                       const Eigen::Isometry3d& root_pose,
+                                       const model::JointVector& q) override;
+  void step() override;
+  int static_geom_count() const override { return static_geoms_; }
+
+  void fix_robot(int slot);
+  const mjModel* model() const { return model_; }
+  mjModel* model() { return model_; }
+  mjData* data() const { return data_; }
+  const MjRobotLayout& layout(int slot) const { return layouts_[slot]; }
+  MjMotor& motor(int dof) { return motors_[dof]; }
+  const MjMotor& motor(int dof) const { return motors_[dof]; }
+  // Writes dof damping and qfrc_applied for `dof` from its motor.
+  void apply_motor(int dof);
+
+ private:
+  void compile();
+  void record_contacts();
+
+  GroundSettings ground_;
+  std::vector<StaticBox> boxes_;
+  std::vector<MjcfRobot> robots_;
+  std::vector<model::JointVector> initial_q_;
+  std::vector<MjRobotLayout> layouts_;
+  std::vector<GeomInfo> geoms_;  // by mjModel geom id
+  std::vector<MjMotor> motors_;  // by dof
+  int static_geoms_ = 0;
+  bool dirty_ = true;
+  mjModel* model_ = nullptr;
+  mjData* data_ = nullptr;
+};
+
+}  // namespace stride::sim

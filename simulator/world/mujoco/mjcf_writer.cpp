@@ -1,0 +1,133 @@
+#include "simulator/world/mujoco/mjcf_writer.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace stride::sim {
+namespace {
+
+// MuJoCo's contact: its default soft constraints (solref 0.02 1, solimp 0.9 0.95 0.001) on an
+// elliptic friction cone, with 10 iterations of its no-slip pass. The default pyramidal cone
+// rattles a box on a box and lets a block creep down a ramp it should hold; without the no-slip
+// pass a standing NAO creeps 0.11 m in 10 s (tests/simulator: both engines' ramp and standing).
+constexpr int kNoslip = 10;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string vec(const Eigen::Vector3d& v) {
+  return num(v.x()) + " " + num(v.y()) + " " + num(v.z());
+}
+
+std::string pose_attrs(const Eigen::Isometry3d& t) {
+  const Eigen::Quaterniond q(t.linear());
+  return " pos=\"" + vec(t.translation()) + "\" quat=\"" + num(q.w()) + " " + num(q.x()) + " " +
+         num(q.y()) + " " + num(q.z()) + "\"";
+}
+
+// MuJoCo takes the higher-priority geom's friction: the lower-friction side gets the priority,
+// so a pair's friction is the smaller one as in ODE. Robot geoms stand at priority 1.
+int static_priority(double friction) {
+  return friction < kRobotGeomFriction ? 2 : 0;
+}
+
+std::string friction_attr(double mu) {
+  return " friction=\"" + num(mu) + " 0.005 0.0001\"";
+}
+
+std::string shape_attrs(const model::CollisionShape& s) {
+  using Kind = model::CollisionShape::Kind;
+  switch (s.kind) {
+    case Kind::Box:
+      return " type=\"box\" size=\"" + vec(s.box_size / 2) + "\"";
+    case Kind::Sphere:
+      return " type=\"sphere\" size=\"" + num(s.radius) + "\"";
+    case Kind::Cylinder:
+      return " type=\"cylinder\" size=\"" + num(s.radius) + " " + num(s.length / 2) + "\"";
+  }
+  return "";
+}
+
+// The same mass and inertia floors as the ODE world, so a massless link stays solvable.
+std::string inertial(const model::Inertial& in) {
+  const double mass = in.mass > 1e-6 ? in.mass : 1e-6;
+  Eigen::Matrix3d i = in.inertia;
+  if (i.diagonal().minCoeff() <= 0) i = Eigen::Matrix3d::Identity() * 1e-9;
+  return "<inertial pos=\"" + vec(in.com) + "\" mass=\"" + num(mass) + "\" fullinertia=\"" +
+         num(i(0, 0)) + " " + num(i(1, 1)) + " " + num(i(2, 2)) + " " + num(i(0, 1)) + " " +
+         num(i(0, 2)) + " " + num(i(1, 2)) + "\"/>";
+}
+
+void write_joint(std::ostream& out, const model::Joint& jt, const std::string& name) {
+  using model::JointType;
+  if (jt.type == JointType::Fixed) return;
+  out << "<joint name=\"" << name << "\" type=\""
+      << (jt.type == JointType::Prismatic ? "slide" : "hinge") << "\" axis=\"" << vec(jt.axis)
+      << "\"";
+  if (jt.type != JointType::Continuous)
+    out << " limited=\"true\" range=\"" << num(jt.lower) << " " << num(jt.upper) << "\"";
+  out << "/>";
+}
+
+void write_link(std::ostream& out, const MjcfRobot& r, int link, const Eigen::Isometry3d& pose,
+                std::vector<GeomInfo>& geoms) {
+  const model::RobotModel& m = *r.model;
+  const model::Link& l = m.links[link];
+  out << "<body name=\"" << mjcf_link_name(r.robot_index, link) << "\"" << pose_attrs(pose) << ">";
+  if (link == m.root_link && !r.fixed) out << "<freejoint/>";
+  if (l.parent_joint >= 0)
+    write_joint(out, m.joints[l.parent_joint], mjcf_joint_name(r.robot_index, l.parent_joint));
+  out << inertial(l.inertial);
+  for (const model::CollisionShape& s : l.collisions) {
+    out << "<geom" << shape_attrs(s) << pose_attrs(s.origin) << friction_attr(kRobotGeomFriction)
+        << " priority=\"1\"/>";
+    geoms.push_back({r.robot_index, link, kRobotGeomFriction});
+  }
+  for (int j : l.child_joints)
+    write_link(out, r, m.joints[j].child_link, m.joints[j].origin, geoms);
+  out << "</body>\n";
+}
+
+}  // namespace
+
+std::string mjcf_link_name(int r, int l) {
+  return "r" + std::to_string(r) + "_l" + std::to_string(l);
+}
+
+std::string mjcf_joint_name(int r, int j) {
+  return "r" + std::to_string(r) + "_j" + std::to_string(j);
+}
+
+std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
+                       const std::vector<StaticBox>& boxes, const std::vector<MjcfRobot>& robots,
+                       std::vector<GeomInfo>& geoms) {
+  geoms.clear();
+  std::ostringstream out;
+  const bool exact = physics.solver == PhysicsSettings::Solver::Exact;
+  out << "<mujoco model=\"stride\">\n<compiler angle=\"radian\" balanceinertia=\"true\"/>\n"
+      << "<option timestep=\"" << num(physics.step) << "\" gravity=\"" << vec(physics.gravity)
+      << "\" integrator=\"Euler\" jacobian=\"dense\" cone=\"elliptic\" noslip_iterations=\""
+      << kNoslip << "\" solver=\"" << (exact ? "Newton" : "PGS") << "\" iterations=\""
+      << (exact ? 100 : physics.iterations) << "\" tolerance=\"" << (exact ? "1e-10" : "0")
+      << "\"/>\n"
+      << "<size njmax=\"1000\" nconmax=\"250\"/>\n<worldbody>\n";
+  if (ground.enabled) {
+    out << "<geom type=\"plane\" size=\"0 0 1\"" << friction_attr(ground.friction) << " priority=\""
+        << static_priority(ground.friction) << "\"/>\n";
+    geoms.push_back({-1, -1, ground.friction});
+  }
+  for (const StaticBox& b : boxes) {
+    out << "<geom type=\"box\" size=\"" << vec(b.size / 2) << "\"" << pose_attrs(b.pose)
+        << friction_attr(b.friction) << " priority=\"" << static_priority(b.friction) << "\"/>\n";
+    geoms.push_back({-1, -1, b.friction});
+  }
+  for (const MjcfRobot& r : robots) write_link(out, r, r.model->root_link, r.root_pose, geoms);
+  out << "</worldbody>\n</mujoco>\n";
+  return out.str();
+}
+
+}  // namespace stride::sim

@@ -1,0 +1,36 @@
+#pragma once
+// MJCF text for MuJoCo from Stride's own parsed scene and robot models: ground, static boxes,
+// robots as body trees in their zero configuration (root at its placement), hinge/slide joints,
+// inertials and collision primitives. Geoms are written in a fixed order that the world's
+// GeomInfo table follows.
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "robot/model/robot_model.hpp"
+#include "simulator/scene/scene_description.hpp"
+#include "simulator/world/geom_info.hpp"
+
+namespace stride::sim {
+
+struct MjcfRobot {
+  const model::RobotModel* model = nullptr;
+  int robot_index = 0;
+  Eigen::Isometry3d root_pose = Eigen::Isometry3d::Identity();
+  bool fixed = false;
+};
+
+// A robot geom's friction; a pair uses the smaller one, as in the ODE world.
+constexpr double kRobotGeomFriction = 0.8;
+
+// The MJCF document, and in `geoms` the GeomInfo of every geom in MuJoCo's geom order.
+std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
+                       const std::vector<StaticBox>& boxes, const std::vector<MjcfRobot>& robots,
+                       std::vector<GeomInfo>& geoms);
+
+// MJCF names of robot `r`'s link `l` and joint `j` bodies/joints.
+std::string mjcf_link_name(int r, int l);
+std::string mjcf_joint_name(int r, int j);
+
+}  // namespace stride::sim
