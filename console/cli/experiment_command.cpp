@@ -1,5 +1,6 @@
 // `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--sweeps dir]
-// [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] [--cases a,b]`: the thesis'
+// [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] [--physics a=v,b=w]
+// [--cases a,b]`: the thesis'
 // Chapter 4 experiments. All but kalman are sweep files in scenes/experiments run by the sweep
 // engine (`stride sweep` runs the same files); --jobs walks at once (default: hardware threads),
 // the results do not depend on it; under mpirun the walks spread over the ranks.
@@ -10,6 +11,7 @@
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/experiment_list.hpp"
 #include "console/experiments/parameter_overrides.hpp"
+#include "console/sweep/sweep_request.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -38,6 +40,13 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.sweeps_dir = a.text_or("--sweeps", o.sweeps_dir);
     for (const std::string& set : a.texts("--set"))
       o.parameters.push_back(experiments::parse_parameter_override(set));
+    if (a.has("--physics")) {
+      if (name == "kalman")
+        throw Error(
+            "stride experiment kalman: --physics: kalman replays one walk's filter; only "
+            "the sweep studies take it");
+      o.physics = sweep::physics_settings(a.text("--physics"));
+    }
     if (a.has("--cases")) {
       if (name != "posture")
         throw Error("stride experiment " + name + ": --cases: only posture takes it");

@@ -1,7 +1,7 @@
 // `stride sweep <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet]
-// [--seeds N] [--scenes dir] [--set target=value ...] [--only column=a,b ...] [--no-plots]
-// [--mpi]`: a sweep file's runs on this machine's cores, or on MPI ranks when mpirun/srun starts
-// it; one CSV row per run in <out>/runs.csv and the tallies printed.
+// [--seeds N] [--scenes dir] [--set target=value ...] [--physics a=v,b=w] [--only column=a,b ...]
+// [--no-plots] [--mpi]`: a sweep file's runs on this machine's cores, or on MPI ranks when
+// mpirun/srun starts it; one CSV row per run in <out>/runs.csv and the tallies printed.
 #include <filesystem>
 #include <ostream>
 
@@ -33,6 +33,9 @@ sweep::SweepRequest sweep_request_flags(ArgumentReader& a, const std::string& co
   }
   r.scenes_dir = a.text_or("--scenes", "");
   for (const std::string& s : a.texts("--set")) r.settings.push_back(sweep::parse_setting(s));
+  if (a.has("--physics"))
+    for (sweep::Setting& s : sweep::physics_settings(a.text("--physics")))
+      r.settings.push_back(std::move(s));
   for (const std::string& s : a.texts("--only")) r.options.only.push_back(sweep::parse_only(s));
   r.options.out_dir = a.text_or("--out", "");
   return r;

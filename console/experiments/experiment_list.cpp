@@ -60,6 +60,7 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
     const std::size_t eq = text.find('=');
     r.settings.push_back({module + "." + text.substr(0, eq), text.substr(eq + 1)});
   }
+  r.settings.insert(r.settings.end(), o.physics.begin(), o.physics.end());
   r.options.out_dir = o.out_dir;
   r.options.resume = o.resume;
   r.options.plots = o.plots;

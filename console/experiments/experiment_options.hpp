@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "console/plot/gnuplot_plot.hpp"
+#include "console/sweep/sweep_spec.hpp"
 
 namespace stride::experiments {
 
@@ -21,6 +22,8 @@ struct ExperimentOptions {
   bool resume = false, quiet = false;
   // --set Module.field=value, in order: {module, "field=value"} applied to every walk.
   std::vector<std::pair<std::string, std::string>> parameters;
+  // --physics engine=mujoco,solver=exact: scene:physics@ settings over every walk's <physics>.
+  std::vector<sweep::Setting> physics;
   // --cases a,b: the posture cases to run, each a scene name or a strategy (none|hip|ankle);
   // empty: all nine.
   std::vector<std::string> cases;

@@ -9,6 +9,7 @@
 #include "console/sweep/mpi_executor.hpp"
 #include "console/sweep/sweep_parser.hpp"
 #include "robot/core/error.hpp"
+#include "simulator/scene/scene_parser.hpp"
 
 namespace stride::sweep {
 namespace {
@@ -85,6 +86,17 @@ Setting parse_setting(const std::string& text) {
                 "': expected target=value (e.g. PatternWalk.steps=6, "
                 "scene:physics@iterations=40)");
   return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+std::vector<Setting> physics_settings(const std::string& text) {
+  std::vector<Setting> out;
+  try {
+    for (const auto& [name, value] : sim::parse_physics_setting(text))
+      out.push_back({"scene:physics@" + name, value});
+  } catch (const Error& e) {
+    throw Error(std::string("--physics: ") + e.what());
+  }
+  return out;
 }
 
 std::pair<std::string, std::vector<std::string>> parse_only(const std::string& text) {

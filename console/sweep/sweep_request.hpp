@@ -25,6 +25,10 @@ struct SweepRequest {
 // "PatternWalk.steps=6", "scene:robot/motor[name=pitch]@gain=50" -> Setting; throws on text
 // without a target or value.
 Setting parse_setting(const std::string& text);
+// --physics "engine=mujoco,solver=exact" -> scene:physics@engine=mujoco,
+// scene:physics@solver=exact: a physics setting (as `stride converge --settings` takes one) over
+// every run's <physics>, each value checked as a scene's would be; throws on a bad setting.
+std::vector<Setting> physics_settings(const std::string& text);
 // "case=hip_slow,hip_fast" -> {"case", {"hip_slow", "hip_fast"}}
 std::pair<std::string, std::vector<std::string>> parse_only(const std::string& text);
 

@@ -61,6 +61,10 @@ TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   EXPECT_NE(err.find("--seeds"), std::string::npos) << err;
   EXPECT_EQ(run({"posture", "--jobs", "0"}, err), 1);
   EXPECT_NE(err.find("--jobs: expected 1..256"), std::string::npos) << err;
+  EXPECT_EQ(run({"posture", "--physics", "solver=fast"}, err), 1);
+  EXPECT_NE(err.find("--physics: physics setting 'solver=fast'"), std::string::npos) << err;
+  EXPECT_EQ(run({"kalman", "--physics", "solver=exact"}, err), 1);
+  EXPECT_NE(err.find("only the sweep studies take it"), std::string::npos) << err;
   EXPECT_EQ(run({"posture", "--scenes", "/nonexistent"}, err), 1);
   EXPECT_NE(err.find("not found"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
