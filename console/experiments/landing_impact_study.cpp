@@ -3,23 +3,15 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/Geometry>
-
+#include "console/session/sim_session.hpp"
+#include "console/sweep/run_plan.hpp"
 #include "robot/core/error.hpp"
-#include "robot/hal/joint_id.hpp"
-#include "robot/model/kinematics/jacobians.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
-#include "robot/model/kinematics/nao_leg_ik.hpp"
 #include "simulator/scene/scene_parser.hpp"
-#include "simulator/simulation.hpp"
-#include "simulator/world/gravity_torque.hpp"
 
 namespace stride::experiments {
 namespace {
 
-constexpr std::array<hal::JointId, 6> kLeg = {hal::JointId::LHipYawPitch, hal::JointId::LHipRoll,
-                                              hal::JointId::LHipPitch,    hal::JointId::LKneePitch,
-                                              hal::JointId::LAnklePitch,  hal::JointId::LAnkleRoll};
 constexpr std::array<const char*, 6> kLegNames = {"LHipYawPitch", "LHipRoll",    "LHipPitch",
                                                   "LKneePitch",   "LAnklePitch", "LAnkleRoll"};
 
@@ -35,16 +27,47 @@ double floor_force_on(const sim::PhysicsWorld& world, int robot, int link) {
   return f;
 }
 
-// Motor torques that hold the leg's own weight (the g(theta) of Eq. 6.17), leg order. Joint j
-// carries every link of the chain from its own child link down to the foot.
-model::LegAngles leg_gravity_compensation(const sim::RobotBody& body) {
-  constexpr std::array<const char*, 6> kChildLinks = {"LPelvis", "LHip",   "LThigh",
-                                                      "LTibia",  "LAnkle", "LFoot"};
-  model::LegAngles g{};
-  for (int j = 0; j < 6; ++j)
-    for (int k = j; k < 6; ++k)  // the motor opposes gravity
-      g[j] -= sim::gravity_torque_about_joint(body, kLegNames[j], {kChildLinks[k]});
-  return g;
+std::string vector_text(const Eigen::Vector3d& v) {
+  return "[" + sweep::number_text(v.x()) + ", " + sweep::number_text(v.y()) + ", " +
+         sweep::number_text(v.z()) + "]";
+}
+
+// Robot 0 under LandingPosition or LandingImpedance with the options' plan and gains; the plan's
+// descent ends `depth` below the floor, which the module cannot see, so it is worked out here
+// from the scene's starting pose.
+sim::SceneDescription landing_scene(const LandingOptions& o) {
+  sim::SceneDescription scene = sim::parse_scene_file(o.scene);
+  if (scene.robots.empty() || !scene.robots[0].fixed_base)
+    throw Error(o.scene + ": expected a robot on a fixed base");
+  sim::Simulation probe(scene);
+  const sim::SimulatedRobot& robot = probe.robot(0);
+  if (std::abs(robot.period() - 0.001) > 1e-12)
+    throw Error(o.scene + ": the study needs a 1 ms control period (<robot period=\"1ms\">)");
+  model::LegAngles q0{};
+  for (int i = 0; i < 6; ++i) {
+    const int j = robot.model().joint_index(kLegNames[i]);
+    if (j < 0 || robot.model().link_index("LFoot") < 0)
+      throw Error(o.scene + ": the robot has no NAO left leg");
+    q0[i] = robot.body().joint_position(j);
+  }
+  const double start_z = model::leg_fk(model::Side::Left, q0).translation().z();
+  const double floor_z = -robot.body().link_pose(0).translation().z();  // seen from the torso
+  if (start_z <= floor_z) throw Error(o.scene + ": the left sole starts on the floor");
+
+  sim::RobotPlacement& placement = scene.robots[0];
+  placement.has_controller = true;
+  ControllerConfig& c = placement.controller;
+  const std::string m = o.impedance ? "LandingImpedance" : "LandingPosition";
+  c.providers["JointRequest"] = m;
+  c.parameters[m + ".speed"] = sweep::number_text(o.speed);
+  c.parameters[m + ".descent"] = sweep::number_text(start_z - (floor_z - o.depth));
+  if (o.impedance) {
+    c.parameters[m + ".stiffness"] = vector_text(o.stiffness);
+    c.parameters[m + ".damping"] = vector_text(o.damping);
+    c.parameters[m + ".rot_stiffness"] = sweep::number_text(o.rot_stiffness);
+    c.parameters[m + ".rot_damping"] = sweep::number_text(o.rot_damping);
+  }
+  return scene;
 }
 
 }  // namespace
@@ -54,71 +77,19 @@ LandingResult run_landing(const LandingOptions& o) {
   if (!(o.depth >= 0 && o.depth < 0.05)) throw Error("landing: --depth: expected [0, 0.05) m");
   if (!(o.duration > 0.3 && o.duration <= 10))
     throw Error("landing: --seconds: expected (0.3, 10] s");
-  sim::Simulation sim(sim::parse_scene_file(o.scene));
-  if (sim.robot_count() < 1 || !sim.scene().robots[0].fixed_base)
-    throw Error(o.scene + ": expected a robot on a fixed base");
-  sim::SimulatedRobot& robot = sim.robot(0);
-  if (std::abs(robot.period() - 0.001) > 1e-12)
-    throw Error(o.scene + ": the study needs a 1 ms control period (<robot period=\"1ms\">)");
-  std::array<int, 6> joint{};
-  for (int i = 0; i < 6; ++i) joint[i] = robot.model().joint_index(kLegNames[i]);
-  const int foot = robot.model().link_index("LFoot");
-  if (foot < 0 || joint[5] < 0) throw Error(o.scene + ": the robot has no NAO left leg");
-
-  // The plan, in the torso frame: the sole keeps its starting pose and sinks at `speed` until it
-  // is `depth` below the floor.
-  const Eigen::Isometry3d torso = robot.body().link_pose(0);
-  model::LegAngles q0{};
-  for (int i = 0; i < 6; ++i) q0[i] = robot.body().joint_position(joint[i]);
-  const Eigen::Isometry3d start = model::leg_fk(model::Side::Left, q0);
-  const double floor_z = -torso.translation().z();  // the floor seen from the torso
-  const double end_z = floor_z - o.depth;
-  if (start.translation().z() <= floor_z)
-    throw Error(o.scene + ": the left sole starts on the floor");
-
+  console::SimSession session(landing_scene(o));
+  sim::Simulation& sim = session.simulation();
+  const int foot = sim.robot(0).model().link_index("LFoot");
   LandingResult out;
   std::vector<std::pair<double, double>> force;  // time, vertical floor force
-  sim.set_controller(0, [&](sim::SimulatedRobot& r) {
-    const double t = sim.time();
-    force.emplace_back(t, floor_force_on(sim.world(), 0, foot));
-    Eigen::Isometry3d desired = start;
-    desired.translation().z() = std::max(end_z, start.translation().z() - o.speed * t);
-    const double desired_vz = desired.translation().z() > end_z ? -o.speed : 0.0;
-    hal::ActuatorFrame cmd = r.latest_commands();
-    if (!o.impedance) {
-      const model::LegIkResult ik = model::leg_ik(model::Side::Left, desired);
-      for (int i = 0; i < 6; ++i) cmd.position[hal::index(kLeg[i])] = ik.q[i];
-    } else {
-      model::LegAngles q{};
-      Eigen::Matrix<double, 6, 1> qd;
-      for (int i = 0; i < 6; ++i) {
-        q[i] = r.body().joint_position(joint[i]);
-        qd[i] = r.body().joint_velocity(joint[i]);
-      }
-      const Eigen::Isometry3d x = model::leg_fk(model::Side::Left, q);
-      const model::Matrix6d j = model::leg_jacobian(model::Side::Left, q);
-      const Eigen::Matrix<double, 6, 1> xd = j * qd;  // sole twist [v; omega]
-      // Eq. 6.17: tau = J^T (B (x'_d - x') + K (x_d - x)) + g(theta).
-      Eigen::Matrix<double, 6, 1> wrench;
-      const Eigen::Vector3d v_des(0, 0, desired_vz);
-      wrench.head<3>() = o.stiffness.cwiseProduct(desired.translation() - x.translation()) +
-                         o.damping.cwiseProduct(v_des - xd.head<3>());
-      const Eigen::AngleAxisd rot(desired.linear() * x.linear().transpose());
-      wrench.tail<3>() = o.rot_stiffness * rot.angle() * rot.axis() - o.rot_damping * xd.tail<3>();
-      const model::LegAngles g = leg_gravity_compensation(r.body());
-      const Eigen::Matrix<double, 6, 1> tau = j.transpose() * wrench;
-      // HipYawPitch is shared with the right leg: it keeps its position; the other five push.
-      for (int i = 1; i < 6; ++i) {
-        const int k = hal::index(kLeg[i]);
-        cmd.mode[k] = hal::ServoMode::Torque;
-        cmd.torque[k] = tau[i] + g[i];
+  session.set_frame_observer(0, [&](sim::SimulatedRobot& r) {
+    force.emplace_back(sim.time(), floor_force_on(sim.world(), 0, foot));
+    const hal::ActuatorFrame& cmd = r.latest_commands();
+    for (int k = 0; k < hal::kNumJoints; ++k)  // the impedance law's torques
+      if (cmd.mode[k] == hal::ServoMode::Torque)
         out.max_torque = std::max(out.max_torque, std::abs(cmd.torque[k]));
-      }
-    }
-    r.write(cmd);
   });
   sim.run_for(o.duration);
-
   // A rigid contact stops the sole within one step, so a single step's force is an impulse over
   // 1 ms; forces are compared as 10 ms means, the scale a sole's FSRs and filter see (Sec. 6.3).
   bool touching = false;

@@ -1,7 +1,7 @@
 #pragma once
 // Thesis Ch. 6 realised in simulation (its future work): a foot set down on the floor by the
-// position-controlled leg, and by the impedance law of Eq. 6.17 in torque mode; the contact force
-// the floor feels on the way.
+// position-controlled leg (the LandingPosition module), and by the impedance law of Eq. 6.17 in
+// torque mode (LandingImpedance); the contact force the floor feels on the way.
 #include <string>
 #include <utility>
 #include <vector>

@@ -1,36 +1,43 @@
 #include "console/experiments/swing_leg_ode_study.hpp"
 
-#include <array>
 #include <cmath>
 
-#include "behaviours/swing_leg/adaptive_control.hpp"
+#include "behaviours/swing_leg/swing_leg_tracking.hpp"
 #include "behaviours/swing_leg/thesis_runs.hpp"
+#include "console/session/sim_session.hpp"
+#include "console/sweep/run_plan.hpp"
 #include "robot/core/error.hpp"
 #include "robot/hal/joint_id.hpp"
-#include "robot/model/dynamics/swing_leg_3d.hpp"
 #include "simulator/scene/scene_parser.hpp"
-#include "simulator/simulation.hpp"
 
 namespace stride::experiments {
 namespace {
 
-using Vec5 = model::Vector5d;
-using Par17 = model::Vector17d;
+using Vec5 = swing_leg::Leg5;
 
-// The 3-D model's joints [hip roll, hip pitch, knee, ankle pitch, ankle roll] on the left leg.
-constexpr std::array<hal::JointId, 5> kLegJoints = {
-    hal::JointId::LHipRoll, hal::JointId::LHipPitch, hal::JointId::LKneePitch,
-    hal::JointId::LAnklePitch, hal::JointId::LAnkleRoll};
-constexpr std::array<const char*, 5> kLegNames = {"LHipRoll", "LHipPitch", "LKneePitch",
-                                                  "LAnklePitch", "LAnkleRoll"};
+// The scene's robot 0 under SwingLegTracking with the options' law and gains.
+sim::SceneDescription tracking_scene(const OdeSwingLegOptions& o, const swing_leg::Leg17& gamma) {
+  sim::SceneDescription scene = sim::parse_scene_file(o.scene);
+  if (scene.robots.empty()) throw Error(o.scene + ": expected a robot");
+  sim::RobotPlacement& robot = scene.robots[0];
+  robot.has_controller = true;
+  ControllerConfig& c = robot.controller;
+  c.providers["JointRequest"] = "SwingLegTracking";
+  const std::string m = "SwingLegTracking.";
+  c.parameters[m + "controller"] = o.controller == swing_leg::Controller::Pd ? "pd" : "adaptive";
+  c.parameters[m + "lambda"] = sweep::number_text(o.lambda);
+  c.parameters[m + "kd"] = sweep::number_text(o.kd);
+  c.parameters[m + "preset"] = o.preset;
+  std::string g = "[";
+  for (int i = 0; i < gamma.size(); ++i) g += (i ? ", " : "") + sweep::number_text(gamma[i]);
+  c.parameters[m + "gamma"] = g + "]";
+  return scene;
+}
 
 }  // namespace
 
-Par17 thesis_ode_gamma() {
-  Par17 g;
-  g << 0.002, 0.008, 0.005, 0.001, 0.002, 0.006, 0.001, 0.005, 0.007, 0.003, 0.001, 0.004, 0.005,
-      0.005, 0.09, 0.015, 0.06;
-  return g;
+Eigen::Matrix<double, 17, 1> thesis_ode_gamma() {
+  return swing_leg::thesis_ode_gamma();
 }
 
 OdeSwingLegResult run_ode_swing_leg(const OdeSwingLegOptions& o) {
@@ -39,58 +46,41 @@ OdeSwingLegResult run_ode_swing_leg(const OdeSwingLegOptions& o) {
     throw Error("swing-leg ode-track: --seconds: expected (1, 600] s");
   if (o.gamma.size() != 0 && (o.gamma.size() != 17 || !(o.gamma.array() > 0).all()))
     throw Error("swing-leg ode-track: expected 17 positive adaptation weights");
-  const Par17 gamma = o.gamma.size() ? Par17(o.gamma) : thesis_ode_gamma();
-  sim::Simulation sim(sim::parse_scene_file(o.scene));
-  if (sim.robot_count() < 1) throw Error(o.scene + ": expected a robot");
-  sim::SimulatedRobot& robot = sim.robot(0);
+  const swing_leg::Leg17 gamma =
+      o.gamma.size() ? swing_leg::Leg17(o.gamma) : swing_leg::thesis_ode_gamma();
+  console::SimSession session(tracking_scene(o, gamma));
+  sim::Simulation& sim = session.simulation();
+  const sim::SimulatedRobot& robot = sim.robot(0);
   if (std::abs(robot.period() - 0.001) > 1e-12)
     throw Error(o.scene + ": the study needs a 1 ms control period (<robot period=\"1ms\">)");
   std::array<int, 5> joint{};
   for (int i = 0; i < 5; ++i) {
-    joint[i] = robot.model().joint_index(kLegNames[i]);
-    if (joint[i] < 0) throw Error(o.scene + ": the robot has no joint " + kLegNames[i]);
+    const std::string name(hal::kJointNames[hal::index(swing_leg::kLeftLeg3d[i])]);
+    joint[i] = robot.model().joint_index(name);
+    if (joint[i] < 0) throw Error(o.scene + ": the robot has no joint " + name);
   }
+  // The study measures against the simulator's joint angles (ideal sensors); the module sees
+  // only what the robot's sensors give it.
   const swing_leg::ReferenceFunction ref = swing_leg::walking_pattern_reference(o.preset);
-  Par17 a_hat = Par17::Zero();
   Vec5 sum_sq = Vec5::Zero(), worst = Vec5::Zero();
   long frames = 0, counted = 0, saturated = 0;
   OdeSwingLegResult out;
-  const double dt = robot.period();
-  sim.set_controller(0, [&](sim::SimulatedRobot& r) {
-    // Joint state from the simulator (ideal sensors): the study is about the control law.
-    Vec5 q, qd;
-    for (int i = 0; i < 5; ++i) {
-      q[i] = r.body().joint_position(joint[i]);
-      qd[i] = r.body().joint_velocity(joint[i]);
-    }
+  session.set_frame_observer(0, [&](sim::SimulatedRobot& r) {
     Eigen::VectorXd rq, rqd, rqdd;
     ref(sim.time(), rq, rqd, rqdd);
-    const swing_leg::JointReference<5> target{rq, rqd, rqdd};
     if (sim.time() >= 1.0) {  // after the pull-in from the initial posture
-      const Vec5 err = q - target.q;
+      Vec5 err;
+      for (int i = 0; i < 5; ++i) err[i] = r.body().joint_position(joint[i]) - rq[i];
       sum_sq += err.cwiseAbs2();
       worst = worst.cwiseMax(err.cwiseAbs());
       ++counted;
     }
-    Vec5 tau;
-    if (o.controller == swing_leg::Controller::Adaptive) {
-      const auto st = swing_leg::sliding_terms<5>(q, qd, target, o.lambda);
-      const model::Leg3dRegressor y = model::leg3d_regressor(q, qd, st.qd_r, st.qdd_r);
-      tau = swing_leg::adaptive_torque<5, 17>(y, a_hat, st, o.kd);    // Eq. 5.1
-      a_hat += dt * swing_leg::adaptation_rate<5, 17>(y, st, gamma);  // Eq. 5.6
-    } else {
-      tau = swing_leg::pd_torque<5>(q, qd, target, o.lambda, o.kd);  // Eq. 5.14
-    }
-    hal::ActuatorFrame cmd = r.latest_commands();
     for (int i = 0; i < 5; ++i) {
-      const int k = hal::index(kLegJoints[i]);
-      cmd.mode[k] = hal::ServoMode::Torque;
-      cmd.torque[k] = tau[i];
-      if (std::abs(tau[i]) > r.max_joint_torque(joint[i])) ++saturated;
+      const double tau = r.latest_commands().torque[hal::index(swing_leg::kLeftLeg3d[i])];
+      if (std::abs(tau) > r.max_joint_torque(joint[i])) ++saturated;
+      out.max_torque = std::max(out.max_torque, std::abs(tau));
     }
-    out.max_torque = std::max(out.max_torque, tau.cwiseAbs().maxCoeff());
     ++frames;
-    r.write(cmd);
   });
   sim.run_for(o.duration);
   out.rms_error = (sum_sq / static_cast<double>(std::max<long>(1, counted))).cwiseSqrt();

@@ -1,6 +1,7 @@
 #pragma once
 // Thesis Sec. 5.4.2 in our simulator: the NAO hung by its torso tracks the Ch. 3 pattern with its
-// left leg driven in torque mode by the adaptive or the PD law, within the motors' torque limits.
+// left leg driven in torque mode by the adaptive or the PD law (the SwingLegTracking module, its
+// joint velocities from JointVelocityEstimator), within the motors' torque limits.
 #include <string>
 
 #include <Eigen/Core>
@@ -24,7 +25,8 @@ struct OdeSwingLegResult {
   double saturated = 0;                  // fraction of frames with a request beyond stall torque
 };
 
-// The adaptation weights the thesis used in its ODE simulator (Sec. 5.4.2).
+// The adaptation weights the thesis used in its ODE simulator (Sec. 5.4.2):
+// swing_leg::thesis_ode_gamma(), SwingLegTracking's default.
 Eigen::Matrix<double, 17, 1> thesis_ode_gamma();
 
 // Throws stride::Error if the scene does not fit (no robot, no left leg, period not 1 ms...).
