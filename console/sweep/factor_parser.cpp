@@ -196,7 +196,7 @@ Block parse_block(const XmlElement& e) {
 }
 
 std::vector<std::uint64_t> parse_seeds(const XmlElement& e) {
-  e.allow_only({"from", "to", "values", "count"});
+  e.allow_only({"from", "to", "values", "count", "heading_spread", "position_spread"});
   std::vector<std::uint64_t> seeds;
   if (e.has("values")) {
     for (const std::string& v : split_list(e.text("values"))) {

@@ -6,6 +6,7 @@
 #include "console/sweep/scene_edit.hpp"
 #include "console/sweep/sweep.hpp"
 #include "robot/core/error.hpp"
+#include "simulator/scene/start_perturbation.hpp"
 
 namespace stride::sweep {
 
@@ -48,6 +49,11 @@ std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, co
   }
   sim::SceneDescription d = load_edited_scene(scene, edits);
   if (seed) d.physics.seed = *seed;
+  if (spec.start_heading_spread > 0 || spec.start_position_spread > 0) {
+    const sim::EnsembleSpec start{1, d.physics.seed, spec.start_heading_spread,
+                                  spec.start_position_spread};
+    sim::apply_start(d, sim::ensemble_member(start, 0));
+  }
   auto session = std::make_unique<console::SimSession>(std::move(d));
   Runtime* rt = session->simulation().robot_count() > 0 ? session->runtime(0) : nullptr;
   // Providers first, then parameters in order: a parameter may belong to a swapped-in module.

@@ -84,6 +84,10 @@ std::map<std::int64_t, std::vector<std::string>> read_rows(const fs::path& p,
 std::string plan_fingerprint(const Sweep& sweep) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (const std::string& c : sweep.csv_header()) h = fnv1a(h, c);
+  const SweepSpec& spec = sweep.spec();
+  if (spec.start_heading_spread > 0 || spec.start_position_spread > 0)  // older plans: unchanged
+    h = fnv1a(h, "start " + std::to_string(spec.start_heading_spread) + " " +
+                     std::to_string(spec.start_position_spread));
   for (const RunPlan& r : sweep.plan().runs) {
     for (const Setting& s : r.settings) h = fnv1a(fnv1a(h, s.target), s.value);
     for (const std::string& c : r.cells) h = fnv1a(h, c);

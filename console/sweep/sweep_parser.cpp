@@ -166,6 +166,12 @@ void parse_root(const XmlElement& root, SweepSpec& s) {
     } else if (n == "seeds") {
       if (seeds) c.fail("a second <seeds>");
       s.seeds = parse_seeds(c), seeds = true;
+      s.start_heading_spread = c.number_or("heading_spread", 0, Dimension::Angle);
+      s.start_position_spread = c.number_or("position_spread", 0, Dimension::Length);
+      if (!(s.start_heading_spread >= 0 && s.start_heading_spread <= 0.5))
+        c.fail_attr("heading_spread", "expected 0 to 0.5 rad");
+      if (!(s.start_position_spread >= 0 && s.start_position_spread <= 0.5))
+        c.fail_attr("position_spread", "expected 0 to 0.5 m");
     } else if (n == "run") {
       c.allow_only({"seconds", "until"});
       if (run || c.has("seconds") == c.has("until"))

@@ -152,7 +152,14 @@ struct SweepSpec {
   std::vector<Setting> settings;  // applied to every run, before blocks and factors
   std::vector<Block> blocks;
   std::vector<std::uint64_t> seeds{1};  // the innermost factor of every block
-  TimePoint until{"end", 0};            // the run's length, as a time point (mark "end" invalid)
+  // <seeds heading_spread position_spread>: run with seed s starts perturbed as the ensemble
+  // member of seed s (simulator/scene/start_perturbation.hpp, what `stride run --ensemble` and
+  // `stride converge` draw): heading and x/y offsets uniform within the spreads. Both 0: a seed
+  // changes the sensor noise (and ODE's iterative row order) only, so with the exact solver an
+  // uncontrolled walk is the same walk under every seed.
+  double start_heading_spread = 0;   // rad
+  double start_position_spread = 0;  // m
+  TimePoint until{"end", 0};         // the run's length, as a time point (mark "end" invalid)
   RecordSpec record;
   std::vector<TallySpec> tallies;
   std::vector<PlotSpec> plots;
