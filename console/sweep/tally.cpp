@@ -236,8 +236,11 @@ std::vector<TallyTable> Tallies::compute(const std::vector<std::vector<std::stri
           a = aggregate(col, c->columns[k], members);
         row.push_back(a.value);
         sd.push_back(col.with_sd ? a.sd : kNaN);
+        // A mean over no walk (all fell) prints "-", not "-+--".
+        const double* v = std::get_if<double>(&a.value);
+        const bool spread = col.with_sd && v && !std::isnan(*v);
         text.push_back(printed(a.value, col.decimals) +
-                       (col.with_sd ? "+-" + printed(a.sd, col.decimals) : ""));
+                       (spread ? "+-" + printed(a.sd, col.decimals) : ""));
       }
       if (any_failed) {
         row.push_back(static_cast<double>(failed));

@@ -9,6 +9,7 @@
 #include "console/sweep/run_session.hpp"
 #include "console/sweep/sweep.hpp"
 #include "console/sweep/sweep_parser.hpp"
+#include "console/sweep/tally.hpp"
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_parser.hpp"
 #include "simulator/scene/start_perturbation.hpp"
@@ -72,6 +73,35 @@ TEST(PerturbedStarts, SpreadOutOfRangeIsAnErrorAtFileLine) {
     EXPECT_NE(what.find("starts.sweep.xml:3"), std::string::npos) << what;
     EXPECT_NE(what.find("heading_spread"), std::string::npos) << what;
   }
+}
+
+// A mean with its sd over a group whose every walk the `where` leaves out prints "-" alone.
+TEST(SpreadColumns, EmptyMeanPrintsOneDash) {
+  const Sweep sweep(parse_sweep_text(R"(<sweep name="starts" scenes="../../scenes">
+  <scene file="nao_stand.xml"/>
+  <seeds from="1" to="2"/>
+  <run seconds="0.01"/>
+  <record><value name="fell" key="walk.fell"/><value name="t" key="sim.time"/></record>
+  <tally name="all" by="seed"><mean name="t" of="t" where="not fell" sd="true"/></tally>
+</sweep>)",
+                                     kDir + "starts.sweep.xml"),
+                    false);
+  const std::vector<std::string> header = sweep.csv_header();
+  const auto row = [&](const std::string& seed, const std::string& fell) {
+    std::vector<std::string> r(header.size(), "");
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == "seed") r[i] = seed;
+      if (header[i] == "status") r[i] = "ok";
+      if (header[i] == "fell") r[i] = fell;
+      if (header[i] == "t") r[i] = "0.25";
+    }
+    return r;
+  };
+  const auto tables = Tallies(sweep).compute({row("1", "0"), row("2", "1")});
+  ASSERT_EQ(tables.size(), 1u);
+  ASSERT_EQ(tables[0].texts.size(), 2u);
+  EXPECT_EQ(tables[0].texts[0].back(), "0.25+-0");
+  EXPECT_EQ(tables[0].texts[1].back(), "-");
 }
 
 }  // namespace
