@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "console/cli/help.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/repl/console_entry.hpp"
 
@@ -46,26 +47,20 @@ int dispatch(const std::vector<std::string>& args) {
   const auto is_help = [](const std::string& a) {
     return a == "--help" || a == "-h" || a == "help";
   };
-  if (!args.empty() && is_help(args[0])) {
-    std::cout << "usage: stride <command> [arguments]\n";
-    for (const auto& s : table) std::cout << "  " << s.summary << "\n";
-    std::cout << stride::console::console_usage();
+  if (!args.empty() && is_help(args[0]))
+    return stride::cli::help_main(std::span<const std::string>(args).subspan(1), std::cout);
+  const auto wants_help = [&] {
+    return (args.size() == 2 && is_help(args[1])) ||
+           std::any_of(args.begin() + 1, args.end(),
+                       [](const std::string& a) { return a == "--help" || a == "-h"; });
+  };
+  // `stride run --help`, `stride experiment posture --help`, `stride mr --help`
+  if (!args.empty() && wants_help() && stride::cli::print_command_help(args[0], std::cout))
     return 0;
-  }
   if (!args.empty())
     for (const auto& s : table)
-      if (s.name == args[0]) {
-        // `stride run --help`, `stride experiment posture --help`: the subcommand's usage line
-        const bool wants_help = (args.size() == 2 && is_help(args[1])) ||
-                                std::any_of(args.begin() + 1, args.end(), [](const std::string& a) {
-                                  return a == "--help" || a == "-h";
-                                });
-        if (wants_help) {
-          std::cout << "usage: stride " << s.summary << "\n";
-          return 0;
-        }
+      if (s.name == args[0])
         return s.run(std::span<const std::string>(args).subspan(1), std::cout, std::cerr);
-      }
   return stride::console::console_main(args, std::cout, std::cerr);
 }
 

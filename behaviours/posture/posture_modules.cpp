@@ -46,7 +46,8 @@ class TorsoStateEstimator final : public Module {
         inertial_(c.require<InertialSensorData>()),
         gyro_(c.require<CalibratedGyro>()),
         params_(c.parameters<TorsoStateEstimatorParameters>()),
-        out_(c.provide<TorsoState>()) {}
+        out_(c.provide<TorsoState>()),
+        debug_(c.debug_request("posture:kalman")) {}
 
   void update() override {
     if (!started_) {
@@ -63,6 +64,14 @@ class TorsoStateEstimator final : public Module {
     out_.roll_rate = filter_.x[3];
     out_.variance = filter_.p.diagonal();
     out_.gain = filter_.gain.diagonal();
+    debug_.show({{"measured_pitch", y[0]},
+                 {"pitch", out_.pitch},
+                 {"measured_roll", y[1]},
+                 {"roll", out_.roll},
+                 {"measured_pitch_rate", y[2]},
+                 {"pitch_rate", out_.pitch_rate},
+                 {"measured_roll_rate", y[3]},
+                 {"roll_rate", out_.roll_rate}});
   }
 
  private:
@@ -71,6 +80,7 @@ class TorsoStateEstimator final : public Module {
   const CalibratedGyro& gyro_;
   const TorsoStateEstimatorParameters& params_;
   TorsoState& out_;
+  DebugRequest debug_;  // measurement beside estimate (Eq. 4.7's y_k and x_k|k)
   TorsoKalmanFilter filter_;
   bool started_ = false;
 };
@@ -83,7 +93,8 @@ class PostureStrategy final : public Module {
       : reference_(c.require<WalkingJointRequest>()),
         torso_(c.require<TorsoState>()),
         params_(c.parameters<PostureStrategyParameters<Joints>>()),
-        out_(c.provide<PostureCorrectedRequest>()) {}
+        out_(c.provide<PostureCorrectedRequest>()),
+        debug_(c.debug_request("posture:corrections")) {}
 
   void update() override {
     const Eigen::Vector4d desired(params_.desired_pitch, params_.desired_roll, 0, 0);
@@ -93,6 +104,10 @@ class PostureStrategy final : public Module {
     apply_posture_correction(Joints, delta, out_.position);
     out_.pitch_correction = delta[0];
     out_.roll_correction = delta[1];
+    debug_.show({{"pitch_correction", delta[0]},
+                 {"roll_correction", delta[1]},
+                 {"torso_pitch", torso_.pitch},
+                 {"torso_roll", torso_.roll}});
   }
 
  private:
@@ -100,6 +115,7 @@ class PostureStrategy final : public Module {
   const TorsoState& torso_;
   const PostureStrategyParameters<Joints>& params_;
   PostureCorrectedRequest& out_;
+  DebugRequest debug_;  // the corrections of Eqs. 4.8-4.9 / 4.12-4.13 and the torso they answer
 };
 
 // Passes the walking targets through: the "no posture control" runs of Sec. 4.3.4.

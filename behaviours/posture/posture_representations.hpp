@@ -54,10 +54,11 @@ struct PostureCorrectedRequest {
   static constexpr std::string_view kTypeName = "PostureCorrectedRequest";
   static constexpr auto fields() {
     using P = PostureCorrectedRequest;
-    return std::make_tuple(field("position", &P::position, "rad"),
-                           field("stiffness", &P::stiffness, "", Range{0, 1}),
-                           field("pitch_correction", &P::pitch_correction, "rad"),
-                           field("roll_correction", &P::roll_correction, "rad"));
+    return std::make_tuple(
+        field("position", &P::position, "rad").named(hal::kJointNames),
+        field("stiffness", &P::stiffness, "", Range{0, 1}).named(hal::kJointNames),
+        field("pitch_correction", &P::pitch_correction, "rad"),
+        field("roll_correction", &P::roll_correction, "rad"));
   }
 };
 

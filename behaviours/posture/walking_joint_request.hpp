@@ -20,10 +20,11 @@ struct WalkingJointRequest {
   static constexpr std::string_view kTypeName = "WalkingJointRequest";
   static constexpr auto fields() {
     using W = WalkingJointRequest;
-    return std::make_tuple(field("position", &W::position, "rad"),
-                           field("stiffness", &W::stiffness, "", Range{0, 1}),
-                           field("ik_beyond_limits", &W::ik_beyond_limits),
-                           field("ik_beyond_limit_frames", &W::ik_beyond_limit_frames));
+    return std::make_tuple(
+        field("position", &W::position, "rad").named(hal::kJointNames),
+        field("stiffness", &W::stiffness, "", Range{0, 1}).named(hal::kJointNames),
+        field("ik_beyond_limits", &W::ik_beyond_limits),
+        field("ik_beyond_limit_frames", &W::ik_beyond_limit_frames));
   }
 };
 

@@ -2,10 +2,26 @@
 
 #include <charconv>
 #include <cmath>
+#include <ostream>
+
+#include "behaviours/module_catalogue.hpp"
 
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
+
+bool asks_for_settings(Args args) {
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "--set" && args[i + 1] == "?") return true;
+  return false;
+}
+
+void print_module_parameters(std::ostream& out) {
+  ModuleRegistry registry;
+  behaviours::register_all_modules(registry);
+  out << "module parameters (--set Module.field=value; default [unit] in [range]):\n";
+  for (const auto& line : parameter_lines(registry)) out << "  " << line << "\n";
+}
 
 ArgumentReader::ArgumentReader(Args args, std::string command)
     : args_(args), command_(std::move(command)) {}
@@ -26,7 +42,7 @@ std::string ArgumentReader::positional(const char* what) {
     used_.insert(static_cast<int>(i));
     return args_[i];
   }
-  throw Error("stride " + command_ + ": missing <" + what + ">");
+  throw UsageError("stride " + command_ + ": missing <" + what + ">");
 }
 
 bool ArgumentReader::has(const std::string& flag) const {
@@ -42,9 +58,9 @@ bool ArgumentReader::flag(const std::string& flag) {
 
 std::string ArgumentReader::text(const std::string& flag) {
   const int i = find(flag);
-  if (i < 0) throw Error("stride " + command_ + ": missing " + flag);
+  if (i < 0) throw UsageError("stride " + command_ + ": missing " + flag);
   if (i + 1 >= static_cast<int>(args_.size()))
-    throw Error("stride " + command_ + ": " + flag + ": expected a value after it");
+    throw UsageError("stride " + command_ + ": " + flag + ": expected a value after it");
   used_.insert(i);
   used_.insert(i + 1);
   return args_[i + 1];
@@ -59,7 +75,7 @@ std::vector<std::string> ArgumentReader::texts(const std::string& flag) {
   for (size_t i = 0; i < args_.size(); ++i) {
     if (args_[i] != flag || used_.count(static_cast<int>(i))) continue;
     if (i + 1 >= args_.size())
-      throw Error("stride " + command_ + ": " + flag + ": expected a value after it");
+      throw UsageError("stride " + command_ + ": " + flag + ": expected a value after it");
     used_.insert(static_cast<int>(i));
     used_.insert(static_cast<int>(i + 1));
     values.push_back(args_[++i]);
@@ -72,7 +88,7 @@ double ArgumentReader::number(const std::string& flag) {
   double v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
-    throw Error("stride " + command_ + ": " + flag + ": '" + t + "' is not a number");
+    throw UsageError("stride " + command_ + ": " + flag + ": '" + t + "' is not a number");
   return v;
 }
 
@@ -85,14 +101,15 @@ std::uint64_t ArgumentReader::unsigned_integer(const std::string& flag) {
   std::uint64_t v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || end != t.data() + t.size())
-    throw Error("stride " + command_ + ": " + flag + ": '" + t + "' is not a non-negative integer");
+    throw UsageError("stride " + command_ + ": " + flag + ": '" + t +
+                     "' is not a non-negative integer");
   return v;
 }
 
 void ArgumentReader::finish() const {
   for (size_t i = 0; i < args_.size(); ++i)
     if (!used_.count(static_cast<int>(i)))
-      throw Error("stride " + command_ + ": unexpected argument '" + args_[i] + "'");
+      throw UsageError("stride " + command_ + ": unexpected argument '" + args_[i] + "'");
 }
 
 }  // namespace stride::cli

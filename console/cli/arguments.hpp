@@ -1,6 +1,7 @@
 #pragma once
 // Reading `--flag value` command lines strictly: unknown flags and bad values are one-line errors.
 #include <cstdint>
+#include <iosfwd>
 #include <set>
 #include <string>
 #include <vector>
@@ -8,6 +9,11 @@
 #include "console/cli/subcommand.hpp"
 
 namespace stride::cli {
+
+// `--set ?` anywhere: the command lists what --set can change instead of running.
+bool asks_for_settings(Args args);
+// `--set ?` for module parameters: every module's fields with default, unit and range.
+void print_module_parameters(std::ostream& out);
 
 class ArgumentReader {
  public:

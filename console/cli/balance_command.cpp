@@ -12,6 +12,7 @@
 #include "behaviours/balance/lipm_solution.hpp"
 #include "behaviours/balance/lqr_balance.hpp"
 #include "behaviours/balance/strategy_classifier.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
@@ -49,7 +50,7 @@ double parse_number(const std::string& flag, const std::string& text) {
     used = 0;
   }
   if (used != text.size() || !std::isfinite(v))
-    throw Error(flag + " expects a number, got '" + text + "'");
+    throw UsageError(flag + " expects a number, got '" + text + "'");
   return v;
 }
 
@@ -58,8 +59,8 @@ std::vector<double> parse_list(const std::string& flag, const std::string& text,
   std::stringstream ss(text);
   for (std::string item; std::getline(ss, item, ',');) out.push_back(parse_number(flag, item));
   if (out.size() != n)
-    throw Error(flag + " expects " + std::to_string(n) + " comma-separated numbers, got '" + text +
-                "'");
+    throw UsageError(flag + " expects " + std::to_string(n) + " comma-separated numbers, got '" +
+                     text + "'");
   return out;
 }
 
@@ -100,17 +101,18 @@ Options parse(Args args) {
       continue;
     }
     const auto it = numeric.find(a);
-    if (it == numeric.end()) throw Error("unknown argument '" + a + "'");
-    if (i + 1 >= args.size()) throw Error(a + " needs a value");
+    if (it == numeric.end()) throw UsageError("unknown argument '" + a + "'");
+    if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
     it->second(args[++i]);
   }
   validate(o.p);
-  if (!(o.dt > 0) || o.dt > 0.1) throw Error("--dt expects a step in (0, 0.1] s");
+  if (!(o.dt > 0) || o.dt > 0.1) throw UsageError("--dt expects a step in (0, 0.1] s");
   if (o.duration && (!(*o.duration > 0) || *o.duration > 60))
-    throw Error("--duration expects a time in (0, 60] s");
-  if (o.duration && *o.duration / o.dt > 2e6) throw Error("--duration / --dt: too many samples");
+    throw UsageError("--duration expects a time in (0, 60] s");
+  if (o.duration && *o.duration / o.dt > 2e6)
+    throw UsageError("--duration / --dt: too many samples");
   if (o.x0.has_value() != o.v0.has_value() && o.what != "classify")
-    throw Error("--x0 and --v0 go together");
+    throw UsageError("--x0 and --v0 go together");
   return o;
 }
 
@@ -420,7 +422,7 @@ Report run_command(const Options& o) {
     rep.figures.push_back(
         {"fig7_14_inputs", "LQR inputs (Fig. 7.14)", "t [s]", "input", {"zmp", "tau"}, "", "", {}});
   } else {
-    throw Error("unknown <what> '" + o.what + "'; " + kUsage);
+    throw UsageError("unknown <what> '" + o.what + "'; " + kUsage);
   }
   return rep;
 }
@@ -429,7 +431,14 @@ Report run_command(const Options& o) {
 
 int balance_main(Args args, std::ostream& out, std::ostream& err) {
   try {
-    const Options o = parse(args);
+    Options o;
+    try {
+      o = parse(args);
+    } catch (const UsageError&) {
+      throw;
+    } catch (const Error& e) {
+      throw UsageError(e.what());  // a bad flag value, e.g. parameters that fail validation
+    }
     const Report rep = run_command(o);
     if (!o.csv.empty()) plot::write_long_csv(rep.set, o.csv);
     if (!o.plots.empty()) {
@@ -449,8 +458,7 @@ int balance_main(Args args, std::ostream& out, std::ostream& err) {
     }
     return 0;
   } catch (const Error& e) {
-    err << "stride balance: " << e.what() << "\n";
-    return 2;
+    return report_error(e, err, "stride balance: ");
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "console/cli/arguments.hpp"
 #include "console/cli/ensemble_arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/ensemble/converge_study.hpp"
 #include "robot/core/error.hpp"
@@ -27,18 +28,19 @@ int converge_main(Args args, std::ostream& out, std::ostream& err) {
       const std::string r = a.text("--reference");
       const auto it = std::find(o.settings.begin(), o.settings.end(), r);
       if (it == o.settings.end())
-        throw Error("stride converge: --reference: '" + r + "' is not one of --settings");
+        throw UsageError("stride converge: --reference: '" + r + "' is not one of --settings");
       o.reference = static_cast<int>(it - o.settings.begin());
     }
     const std::uint64_t starts = a.has("--starts") ? a.unsigned_integer("--starts") : 16;
-    if (starts < 1 || starts > 1000) throw Error("stride converge: --starts: expected 1..1000");
+    if (starts < 1 || starts > 1000)
+      throw UsageError("stride converge: --starts: expected 1..1000");
     o.spec = read_ensemble_spec(a, "converge", static_cast<int>(starts));
     o.seconds = a.number_or("--seconds", o.seconds);
     if (!(o.seconds > 0 && o.seconds <= 3600))
-      throw Error("stride converge: --seconds: expected a time in (0, 3600] s");
+      throw UsageError("stride converge: --seconds: expected a time in (0, 3600] s");
     o.tolerance.distance = a.number_or("--tolerance", o.tolerance.distance);
     if (!(o.tolerance.distance >= 0 && o.tolerance.distance < 1))
-      throw Error("stride converge: --tolerance: expected a fraction in [0, 1)");
+      throw UsageError("stride converge: --tolerance: expected a fraction in [0, 1)");
     if (a.has("--lost-tolerance"))
       o.tolerance.lost =
           static_cast<int>(std::min<std::uint64_t>(a.unsigned_integer("--lost-tolerance"), 1000));
@@ -48,8 +50,7 @@ int converge_main(Args args, std::ostream& out, std::ostream& err) {
     ensemble::run_convergence_study(o, out);
     return 0;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 1;
+    return report_error(e, err);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/experiment_list.hpp"
 #include "console/experiments/parameter_overrides.hpp"
@@ -17,6 +18,10 @@
 namespace stride::cli {
 
 int experiment_main(Args args, std::ostream& out, std::ostream& err) {
+  if (asks_for_settings(args)) {
+    print_module_parameters(out);
+    return kExitOk;
+  }
   try {
     ArgumentReader a(args, "experiment");
     experiments::ExperimentOptions o;
@@ -27,12 +32,12 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
         a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push");
     if (a.has("--seeds")) {
       const std::uint64_t n = a.unsigned_integer("--seeds");
-      if (n < 1 || n > 1000) throw Error("stride experiment: --seeds: expected 1..1000");
+      if (n < 1 || n > 1000) throw UsageError("stride experiment: --seeds: expected 1..1000");
       o.seeds = static_cast<int>(n);
     }
     if (a.has("--jobs")) {
       const std::uint64_t n = a.unsigned_integer("--jobs");
-      if (n < 1 || n > 256) throw Error("stride experiment: --jobs: expected 1..256");
+      if (n < 1 || n > 256) throw UsageError("stride experiment: --jobs: expected 1..256");
       o.jobs = static_cast<int>(n);
     }
     o.out_dir = a.text_or("--out", "");
@@ -49,20 +54,19 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     }
     if (a.has("--cases")) {
       if (name != "posture")
-        throw Error("stride experiment " + name + ": --cases: only posture takes it");
+        throw UsageError("stride experiment " + name + ": --cases: only posture takes it");
       std::stringstream list(a.text_or("--cases", ""));
       for (std::string item; std::getline(list, item, ',');)
         if (!item.empty()) o.cases.push_back(item);
       if (o.cases.empty())
-        throw Error("stride experiment posture: --cases: expected a,b,... of case names");
+        throw UsageError("stride experiment posture: --cases: expected a,b,... of case names");
     }
     a.finish();
     o.command = "stride experiment";
     for (const std::string& s : args) o.command += " " + s;
     return experiments::run_experiment(name, o, out, err);
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 1;
+    return report_error(e, err);
   }
 }
 

@@ -7,7 +7,9 @@
 #include <ostream>
 #include <sstream>
 
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/kinematics/dls_ik.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
@@ -26,10 +28,6 @@ constexpr const char* kUsage =
     "       stride kin ik --chain <chain> --pose \"x y z roll pitch yaw\" [--json]\n"
     "       stride kin com --q \"25 angles (LoLA order)\" | \"Name=value ...\" [--urdf file] "
     "[--json]";
-
-struct UsageError : Error {
-  using Error::Error;
-};
 
 // --name value pairs after the verb; every option must be known and appear once.
 std::map<std::string, std::string> options(Args args, std::initializer_list<const char*> known) {
@@ -120,7 +118,7 @@ void print_pose(std::ostream& out, const Eigen::Isometry3d& t, bool json) {
 }
 
 std::string default_urdf() {
-  return "scenes/robots/nao/nao.urdf";
+  return data_file("scenes/robots/nao/nao.urdf");
 }
 
 int fk(Args args, std::ostream& out) {
@@ -225,12 +223,8 @@ int kin_main(Args args, std::ostream& out, std::ostream& err) {
     if (verb == "ik") return ik(rest, out);
     if (verb == "com") return com(rest, out);
     throw UsageError("stride kin: '" + verb + "': expected fk, ik or com");
-  } catch (const UsageError& e) {
-    err << e.what() << "\n";
-    return 2;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 1;
+    return report_error(e, err);
   }
 }
 

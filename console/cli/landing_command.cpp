@@ -4,9 +4,11 @@
 #include <ostream>
 
 #include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/landing_impact_study.hpp"
 #include "console/plot/gnuplot_plot.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -15,7 +17,7 @@ int landing_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentReader a(args, "landing");
     experiments::LandingOptions o;
-    o.scene = a.text_or("--scene", "scenes/landing/landing_nao.xml");
+    o.scene = a.has("--scene") ? a.text("--scene") : data_file("scenes/landing/landing_nao.xml");
     o.speed = a.number_or("--speed", o.speed);
     o.depth = a.number_or("--depth", o.depth);
     o.duration = a.number_or("--seconds", o.duration);
@@ -49,8 +51,7 @@ int landing_main(Args args, std::ostream& out, std::ostream& err) {
     }
     return 0;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 2;
+    return report_error(e, err);
   }
 }
 

@@ -9,8 +9,11 @@
 #include <vector>
 
 #include "behaviours/walking/pattern/pattern_joints.hpp"
+#include "behaviours/walking/pattern/pattern_parameter_list.hpp"
 #include "behaviours/walking/pattern/support_polygon.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
+#include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
@@ -44,7 +47,7 @@ double parse_period(const std::string& text) {
   }
   // The lower bound keeps a 15 s walk to 150 000 samples.
   if (used != text.size() || !(v >= 1e-4 && v <= 1.0))
-    throw Error("--dt: expected a period in [0.0001, 1] s, got '" + text + "'");
+    throw UsageError("--dt: expected a period in [0.0001, 1] s, got '" + text + "'");
   return v;
 }
 
@@ -62,7 +65,7 @@ PatternOptions parse_options(Args args) {
     } else if (a == "--set") {
       const std::string& kv = value();
       const std::size_t eq = kv.find('=');
-      if (eq == std::string::npos) throw Error("--set: expected name=value, got '" + kv + "'");
+      if (eq == std::string::npos) throw UsageError("--set: expected name=value, got '" + kv + "'");
       sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
     } else if (a == "--conventional") {
       o.conventional = true;
@@ -192,12 +195,27 @@ void write_plots(const std::vector<Frame>& walk, const walking::PatternParameter
   stick_diagram(walk, model::Side::Right, dir, "fig3_18_stick_right", every);
 }
 
+// `--set ?`: the settable parameters with their values in the chosen preset.
+int list_parameters(Args args, std::ostream& out) {
+  walking::PatternParameters p;
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "--preset") p = walking::preset(args[i + 1]);
+  out << "pattern parameters (--set name=value; value [unit] in range: meaning):\n";
+  for (const auto& line : walking::parameter_lines(p)) out << "  " << line << "\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int pattern_main(Args args, std::ostream& out, std::ostream& err) {
   if (args.empty()) {
     err << kUsage << "\n";
-    return 2;
+    return kExitUsage;
+  }
+  try {
+    if (asks_for_settings(args)) return list_parameters(args, out);
+  } catch (const Error& e) {
+    return report_error(UsageError(e.what()), err, "stride pattern: ");
   }
   PatternOptions o;
   std::vector<Frame> walk;

@@ -20,6 +20,7 @@
 #include "behaviours/balance/modules/balance_representations.hpp"
 #include "behaviours/balance/strategy_classifier.hpp"
 #include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
@@ -48,7 +49,7 @@ std::map<std::string, std::string> parse_settings(const std::string& text) {
   for (std::string item; ss >> item;) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || item.find('.') > eq)
-      throw Error("stride push-sweep: --set: expected Module.field=value, got '" + item + "'");
+      throw UsageError("stride push-sweep: --set: expected Module.field=value, got '" + item + "'");
     out[item.substr(0, eq)] = item.substr(eq + 1);
   }
   return out;
@@ -74,8 +75,8 @@ std::string module_of(const std::string& strategy) {
   if (strategy == "hip") return "HipBalance";
   if (strategy == "combined") return "CombinedBalance";
   if (strategy == "lqr") return "LqrBalance";
-  throw Error("stride push-sweep: --strategy: expected ankle, hip, combined or lqr, got '" +
-              strategy + "'");
+  throw UsageError("stride push-sweep: --strategy: expected ankle, hip, combined or lqr, got '" +
+                   strategy + "'");
 }
 
 bool strategy_recovers(const std::string& strategy, const balance::Classification& c) {
@@ -93,7 +94,7 @@ double parse_value(const std::string& flag, const std::string& s) {
     used = 0;
   }
   if (used != s.size() || !std::isfinite(v))
-    throw Error("stride push-sweep: " + flag + ": expected a number, got '" + s + "'");
+    throw UsageError("stride push-sweep: " + flag + ": expected a number, got '" + s + "'");
   return v;
 }
 
@@ -108,14 +109,15 @@ std::vector<double> parse_list(const std::string& flag, const std::string& text)
     for (const auto& p : parts) v.push_back(parse_value(flag, p));
   } else {
     if (parts.size() != 3)
-      throw Error("stride push-sweep: " + flag + ": expected first:last:step, got '" + text + "'");
+      throw UsageError("stride push-sweep: " + flag + ": expected first:last:step, got '" + text +
+                       "'");
     const double a = parse_value(flag, parts[0]), b = parse_value(flag, parts[1]),
                  s = parse_value(flag, parts[2]);
     if (!(s > 0) || b < a)
-      throw Error("stride push-sweep: " + flag + ": expected first <= last and step > 0");
+      throw UsageError("stride push-sweep: " + flag + ": expected first <= last and step > 0");
     for (int i = 0; a + i * s <= b + 1e-9 * s; ++i) v.push_back(a + i * s);
   }
-  if (v.empty()) throw Error("stride push-sweep: " + flag + ": expected at least one value");
+  if (v.empty()) throw UsageError("stride push-sweep: " + flag + ": expected at least one value");
   return v;
 }
 
@@ -129,7 +131,7 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
   sim::SceneDescription scene = sim::parse_scene_file(o.scene);
   if (o.seed) scene.physics.seed = *o.seed;
   if (scene.robots.empty() || !scene.robots[0].has_controller)
-    throw Error("stride push-sweep: " + o.scene + ": robot 0 needs a <controller>");
+    throw InputError("stride push-sweep: " + o.scene + ": robot 0 needs a <controller>");
   auto& controller = scene.robots[0].controller;
   controller.providers["JointRequest"] = module_of(o.strategy);
   for (const auto& [key, value] : o.parameters) controller.parameters[key] = value;
@@ -234,6 +236,10 @@ void write_json(std::ostream& out, const SweepOptions& o, const std::vector<Push
 int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentReader a(args, "push-sweep");
+    if (asks_for_settings(args)) {
+      print_module_parameters(out);
+      return kExitOk;
+    }
     SweepOptions o;
     o.scene = a.text("--scene");
     o.strategy = a.text_or("--strategy", "ankle");
@@ -249,13 +255,13 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string csv = a.text_or("--csv", "");
     const bool json = a.flag("--json");
     a.finish();
-    if (!(o.duration > 0)) throw Error("stride push-sweep: --duration: expected a time > 0");
+    if (!(o.duration > 0)) throw UsageError("stride push-sweep: --duration: expected a time > 0");
     if (!(o.settle >= 0) || !(o.observe > 0) || !(o.estimate_delay >= 0))
-      throw Error(
+      throw UsageError(
           "stride push-sweep: --settle, --observe, --estimate-delay: expected times >= 0, > 0, "
           ">= 0");
     for (double i : o.impulses)
-      if (!(i >= 0)) throw Error("stride push-sweep: --impulses: expected values >= 0 N*s");
+      if (!(i >= 0)) throw UsageError("stride push-sweep: --impulses: expected values >= 0 N*s");
 
     std::vector<PushResult> results;
     for (double impulse : o.impulses)
@@ -270,9 +276,11 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
       write_file(csv, f.str());
     }
     return 0;
+  } catch (const Error& e) {
+    return report_error(e, err);
   } catch (const std::exception& e) {
     err << e.what() << "\n";
-    return 2;
+    return kExitRunFailure;
   }
 }
 

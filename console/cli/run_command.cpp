@@ -11,6 +11,7 @@
 
 #include "console/cli/arguments.hpp"
 #include "console/cli/ensemble_arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/lola_run.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/ensemble/ensemble_report.hpp"
@@ -31,7 +32,8 @@ int run_ensemble(ArgumentReader& a, const std::string& scene, double seconds, st
   if (n < 1 || n > 1000) throw Error("stride run: --ensemble: expected 1..1000 starts");
   for (const char* single : {"--report", "--log", "--snapshot", "--video", "--view", "--fps"})
     if (a.has(single))
-      throw Error(std::string("stride run: ") + single + ": not with --ensemble (one run only)");
+      throw UsageError(std::string("stride run: ") + single +
+                       ": not with --ensemble (one run only)");
   ensemble::EnsembleRequest r{
       scene, {}, read_ensemble_spec(a, "run", static_cast<int>(n)), seconds};
   const int jobs = read_jobs(a, "run");
@@ -49,7 +51,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string scene = a.positional("scene");
     const double seconds = a.number_or("--seconds", 10.0);
     if (const std::string p = limits::duration_problem(seconds); !p.empty())
-      throw Error("stride run: --seconds: " + p);
+      throw UsageError("stride run: --seconds: " + p);
     if (a.has("--ensemble")) return run_ensemble(a, scene, seconds, out);
     const std::optional<std::uint64_t> seed =
         a.has("--seed") ? std::optional<std::uint64_t>(a.unsigned_integer("--seed")) : std::nullopt;
@@ -60,7 +62,8 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string video = a.text_or("--video", "");
     const std::string view = a.text_or("--view", "");
     const double fps = a.number_or("--fps", 25.0);
-    if (!(fps >= 1 && fps <= 1000)) throw Error("stride run: --fps: expected 1 to 1000 frames/s");
+    if (!(fps >= 1 && fps <= 1000))
+      throw UsageError("stride run: --fps: expected 1 to 1000 frames/s");
     const LolaRunOptions lola = read_lola_options(a);
     a.finish();
 
@@ -100,8 +103,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     if (recorder.active()) out << "video: " << recorder.frames() << " frames in " << video << "\n";
     return 0;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 1;
+    return report_error(e, err);
   }
 }
 

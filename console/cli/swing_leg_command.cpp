@@ -8,9 +8,11 @@
 
 #include "behaviours/swing_leg/thesis_runs.hpp"
 #include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/swing_leg_ode_study.hpp"
 #include "console/plot/gnuplot_plot.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -101,11 +103,11 @@ void plots(const std::string& dir, const std::string& stem, const std::string& c
 // Sec. 5.4.2: both laws on the simulated NAO over a grid of gains a 1 kHz torque loop allows.
 int ode_track(ArgumentReader& a, std::ostream& out) {
   experiments::OdeSwingLegOptions o;
-  o.scene = a.text_or("--scene", "scenes/swing_leg/hanging_nao.xml");
+  o.scene = a.has("--scene") ? a.text("--scene") : data_file("scenes/swing_leg/hanging_nao.xml");
   o.duration = a.number_or("--seconds", 10);
   o.preset = a.text_or("--preset", "medium");
   const double gamma_scale = a.number_or("--gamma-scale", 1.0);
-  if (!(gamma_scale > 0)) throw Error("stride swing-leg: --gamma-scale: expected > 0");
+  if (!(gamma_scale > 0)) throw UsageError("stride swing-leg: --gamma-scale: expected > 0");
   o.gamma = experiments::thesis_ode_gamma() * gamma_scale;
   a.finish();
   out << "swing-leg ode-track (Sec. 5.4.2, Figs. 5.13-5.14): " << o.scene << ", left leg in torque "
@@ -135,10 +137,16 @@ int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
     ArgumentReader a(args, "swing-leg");
     const std::string study = a.positional("study");
     if (study == "ode-track") return ode_track(a, out);
-    swing_leg::ThesisRun run = swing_leg::thesis_run(study);
+    swing_leg::ThesisRun run = [&] {
+      try {
+        return swing_leg::thesis_run(study);
+      } catch (const Error& e) {
+        throw UsageError(e.what());  // an unknown study is a wrong command line
+      }
+    }();
     const std::string which = a.text_or("--controller", "both");
     if (which != "adaptive" && which != "pd" && which != "both")
-      throw Error("stride swing-leg: --controller: expected adaptive, pd or both");
+      throw UsageError("stride swing-leg: --controller: expected adaptive, pd or both");
     run.options.duration = a.number_or("--seconds", run.options.duration);
     run.options.dt = a.number_or("--dt", run.options.dt);
     const std::string csv_dir = a.text_or("--csv", "");
@@ -178,8 +186,7 @@ int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
     }
     return 0;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 2;
+    return report_error(e, err);
   }
 }
 

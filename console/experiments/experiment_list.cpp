@@ -35,8 +35,8 @@ std::vector<std::string> posture_case_levels(const sweep::Sweep& s,
       if (std::find(levels.begin(), levels.end(), l) == levels.end()) levels.push_back(l);
     }
     if (!found)
-      throw Error("stride experiment posture: --cases: unknown case '" + want +
-                  "' (expected none, hip, ankle or <strategy>_<slow|medium|fast>)");
+      throw UsageError("stride experiment posture: --cases: unknown case '" + want +
+                       "' (expected none, hip, ankle or <strategy>_<slow|medium|fast>)");
   }
   return levels;
 }
@@ -48,8 +48,8 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   // A relative directory not under the working directory is the data directory's (data_dir.hpp).
   const std::string scenes = o.scenes_dir.empty() ? "" : find_input(o.scenes_dir);
   if (!scenes.empty() && !std::filesystem::is_directory(scenes))
-    throw Error("stride experiment " + name + ": --scenes: directory '" + o.scenes_dir +
-                "' not found");
+    throw InputError("stride experiment " + name + ": --scenes: directory '" + o.scenes_dir +
+                     "' not found");
   sweep::SweepRequest r;
   r.file = experiment_sweep_file(name, o.sweeps_dir);
   r.jobs = o.jobs;
@@ -91,12 +91,12 @@ std::string experiment_names() {
 std::string experiment_sweep_file(const std::string& name, const std::string& sweeps_dir) {
   if (name == "kalman") return "";
   if (std::find(kSweeps.begin(), kSweeps.end(), name) == kSweeps.end())
-    throw Error("stride experiment: unknown experiment '" + name + "' (expected one of " +
+    throw UsageError("stride experiment: unknown experiment '" + name + "' (expected one of " +
                 experiment_names() + ")");
   const std::filesystem::path p =
       std::filesystem::path(find_input(sweeps_dir)) / (name + ".sweep.xml");
   if (!std::filesystem::exists(p))
-    throw Error("experiment sweep file '" + p.string() +
+    throw InputError("experiment sweep file '" + p.string() +
                 "' not found (--sweeps <dir> chooses another)");
   return p.string();
 }

@@ -16,7 +16,8 @@ std::string scene_path(const ExperimentOptions& o, const std::string& name) {
   const std::string dir = o.scenes_dir.empty() ? o.sweeps_dir : o.scenes_dir;
   const std::filesystem::path p = std::filesystem::path(find_input(dir)) / (name + ".xml");
   if (!std::filesystem::exists(p))
-    throw Error("experiment scene '" + p.string() + "' not found (--scenes <dir> chooses another)");
+    throw InputError("experiment scene '" + p.string() +
+                     "' not found (--scenes <dir> chooses another)");
   return p.string();
 }
 

@@ -8,7 +8,7 @@ std::pair<std::string, std::string> parse_parameter_override(const std::string& 
   const std::size_t dot = text.find('.'), eq = text.find('=');
   if (dot == std::string::npos || eq == std::string::npos || dot == 0 || eq < dot + 2 ||
       eq + 1 == text.size())
-    throw Error("stride experiment: --set '" + text + "': expected Module.field=value");
+    throw UsageError("stride experiment: --set '" + text + "': expected Module.field=value");
   return {text.substr(0, dot), text.substr(dot + 1)};
 }
 

@@ -60,7 +60,7 @@ Command parse_command(std::string_view line) {
   try {
     return parse_checked(line);
   } catch (const Error& e) {
-    throw Error(one_line(e.what()));
+    throw InputError(one_line(e.what()));  // a line that does not parse is bad command text
   }
 }
 

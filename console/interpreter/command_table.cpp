@@ -1,6 +1,7 @@
 #include "console/interpreter/command_table.hpp"
 
 #include "console/interpreter/sweep_arguments.hpp"
+#include "console/interpreter/help_search.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/physical_limits.hpp"
@@ -16,7 +17,8 @@ bool is_framework_key(std::string_view key) {
 
 bool is_value_key(std::string_view key) {
   if (is_framework_key(key)) return true;
-  for (std::string_view prefix : {"sim.", "robot.", "log.", "provider:", "sweep."})
+  for (std::string_view prefix :
+       {"sim.", "robot.", "log.", "provider:", "override:", "debug:", "sweep."})
     if (key.starts_with(prefix) && key.size() > prefix.size()) return true;
   return false;
 }
@@ -26,8 +28,10 @@ namespace {
 void need_key(const std::string& key, bool framework_only) {
   if (framework_only ? !is_framework_key(key) : !is_value_key(key))
     throw Error("'" + key + "' is not a key (representation:X" +
-                std::string(framework_only ? " or module:X)"
-                                           : ", module:X, sim.*, robot.*, log.*, sweep.*)"));
+                std::string(framework_only
+                                ? " or module:X)"
+                                : ", module:X, sim.*, robot.*, log.*, sweep.*, provider:X, "
+                                  "override:X, debug:X)"));
 }
 
 void check_run(const Words& a) {
@@ -45,6 +49,11 @@ void check_get(const Words& a) {
 }
 void check_set(const Words& a) {
   need_key(a[0], true);
+  if (a.size() == 2 && a[1] == "unchanged") {
+    if (!a[0].starts_with("representation:"))
+      throw Error("'unchanged' releases a representation, not '" + a[0] + "'");
+    return;
+  }
   for (std::size_t i = 1; i < a.size(); ++i)
     if (a[i].find('=') == std::string::npos || a[i].front() == '=')
       throw Error("expected <field>=<value>, got '" + a[i] + "'");
@@ -53,8 +62,8 @@ void check_mr(const Words& a) {
   if (a.size() == 1 && a[0] != "?") throw Error("give a module, default or ?");
 }
 void check_dr(const Words& a) {
-  if (a.size() == 1 && a[0] != "?") throw Error("give on or off");
-  if (a.size() == 2) parse_on_off(a[1], "switch");
+  if (a.size() == 1 && a[0] != "?") throw Error("give on, off or quiet");
+  if (a.size() == 2) parse_debug_switch(a[1]);
 }
 void check_watch(const Words& a) {
   if (a.size() == 1 && a[0] == "off") return;
@@ -76,7 +85,7 @@ void check_plot(const Words& a) {
 void check_log(const Words& a) {
   const std::string& s = a[0];
   const std::size_t n = a.size() - 1;
-  if (s == "stop" || s == "replay") {
+  if (s == "stop" || s == "replay" || s == "info") {
     if (n != 0) throw Error("'log " + s + "' takes no arguments");
   } else if (s == "start" || s == "load" || s == "save") {
     if (n != 1) throw Error("'log " + s + "' takes one file");
@@ -86,7 +95,8 @@ void check_log(const Words& a) {
   } else if (s == "export") {
     if (n < 2) throw Error("'log export' takes a csv file and at least one key");
   } else {
-    throw Error("unknown log action '" + s + "' (start, stop, save, load, goto, export, replay)");
+    throw Error("unknown log action '" + s +
+                "' (start, stop, save, load, info, goto, export, replay)");
   }
 }
 void check_push(const Words& a) {
@@ -136,6 +146,11 @@ void check_wait(const Words& a) {
 
 }  // namespace
 
+DebugSwitch parse_debug_switch(const std::string& word) {
+  if (word == "quiet") return DebugSwitch::Quiet;
+  return parse_on_off(word, "dr") ? DebugSwitch::On : DebugSwitch::Off;
+}
+
 VideoStart parse_video_start(const Words& a) {
   if (a.size() < 2) throw Error("video start: expected a directory");
   VideoStart v;
@@ -160,17 +175,25 @@ const std::vector<CommandSpec>& command_table() {
       {"pause", "pause", "stop running", 0, 0, nullptr},
       {"realtime", "realtime on|off", "pace runs to the wall clock", 1, 1, check_on_off},
       {"get", "get <key> [?]", "print a value; ? prints the type description", 1, 2, check_get},
-      {"set", "set <key> <field>=<value>...", "change fields, all or nothing", 2, -1, check_set},
+      {"set", "set <key> <field>=<value>... | set representation:X unchanged",
+       "change fields, all or nothing; a representation's are held every frame until unchanged", 2,
+       -1, check_set},
       {"mr", "mr ? | mr <Rep> <Module>|default|?", "module request: choose a provider", 1, 2,
        check_mr},
-      {"dr", "dr ? | dr <name> on|off", "debug request", 1, 2, check_dr},
+      {"dr", "dr ? | dr <name> on|off|quiet",
+       "debug request: on prints its lines and values (debug:<name>.<value>), quiet only the "
+       "values; dr ? lists them",
+       1, 2, check_dr},
       {"watch", "watch <key>... [every N] | watch off", "print values every N steps while running",
        1, -1, check_watch},
       {"plot", "plot <key>... [to file.csv] | plot stop", "record values; stop writes CSV + PNG", 1,
        -1, check_plot},
       {"log",
-       "log start <file>|stop|save <file>|load <file>|goto <frame>|export <csv> <key>...|replay",
-       "record, load, browse, export and replay logs", 1, -1, check_log},
+       "log start <file>|stop|save <file>|load <file>|info|goto <frame>|export <csv> <key>...|"
+       "replay",
+       "record, load, browse, export and replay logs; info lists a log's frames, representations "
+       "and the providers it was recorded with (replay uses them)",
+       1, -1, check_log},
       {"report", "report [file]", "run report (JSON with the state hash if a file is given)", 0, 1,
        nullptr},
       {"push", "push <body> <fx> <fy> <fz> <seconds>", "apply a force (N) to a link", 5, 5,
@@ -198,6 +221,64 @@ const std::vector<CommandSpec>& command_table() {
       {"quit", "quit", "leave the console", 0, 0, nullptr},
   };
   return table;
+}
+
+const std::vector<KeySpec>& key_table() {
+  static const std::vector<KeySpec> table = {
+      {"representation:X[.path]",
+       "a representation on the blackboard; set holds it every frame until 'set "
+       "representation:X unchanged'; joint arrays by name, e.g. .position[LAnklePitch]"},
+      {"module:X[.path]", "a module's parameters (get module:X ? lists fields and ranges)"},
+      {"provider:X", "the module that provides representation X (mr changes it)"},
+      {"override:X", "what set holds on representation X, or (none)"},
+      {"debug:<request>.<value>", "a value a debug request shows (dr <request> on|quiet)"},
+      {"sim.time|steps|hash", "simulated time [s], physics steps, state hash"},
+      {"robot.name|fell", "the selected robot's name; whether it has fallen"},
+      {"robot.torso.x|y|z|roll|pitch|yaw", "the selected robot's true torso pose [m, rad]"},
+      {"robot.com.x|y|z", "the selected robot's true centre of mass [m]"},
+      {"log.frames|mismatches|compared|replayed", "the loaded log and its last replay"},
+  };
+  return table;
+}
+
+std::vector<HelpEntry> help_entries() {
+  std::vector<HelpEntry> entries;
+  for (const auto& s : command_table())
+    entries.push_back({std::string(s.name), std::string(s.usage) + " " + std::string(s.summary)});
+  for (const auto& k : key_table())
+    entries.push_back({std::string(k.pattern), std::string(k.summary)});
+  return entries;
+}
+
+std::string help_text(const std::string& word) {
+  const auto entries = help_entries();
+  const std::size_t first_key = command_table().size();
+  std::vector<std::size_t> shown;
+  if (word.empty() || word == "keys") {
+    for (std::size_t i = word.empty() ? 0 : first_key; i < entries.size(); ++i) shown.push_back(i);
+  } else {
+    shown = find_help(entries, word);
+  }
+  if (shown.empty()) return "no command or key matches '" + word + "'\n";
+  return help_listing(shown);
+}
+
+std::string help_listing(const std::vector<std::size_t>& shown) {
+  const std::size_t first_key = command_table().size();
+  std::string out;
+  bool keys_header = false;
+  for (const std::size_t i : shown) {
+    if (i < first_key) {
+      const CommandSpec& s = command_table()[i];
+      out += "  " + std::string(s.usage) + "\n      " + std::string(s.summary) + "\n";
+      continue;
+    }
+    if (!keys_header) out += "keys:\n";
+    keys_header = true;
+    const KeySpec& k = key_table()[i - first_key];
+    out += "  " + std::string(k.pattern) + "\n      " + std::string(k.summary) + "\n";
+  }
+  return out;
 }
 
 const CommandSpec* find_command(std::string_view name) {

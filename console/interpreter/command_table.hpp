@@ -5,6 +5,9 @@
 #include <string_view>
 #include <vector>
 
+#include "console/interpreter/help_search.hpp"
+#include "robot/framework/module.hpp"
+
 namespace stride::console {
 
 using Words = std::vector<std::string>;
@@ -20,6 +23,21 @@ struct CommandSpec {
 };
 
 const std::vector<CommandSpec>& command_table();
+
+// `help [word]`: every command and key namespace, or what `word` finds (console/interpreter/
+// help_search.hpp: a command's name first, then whole words, then any part); "keys" lists the
+// key namespaces.
+std::string help_text(const std::string& word);
+// The entries help searches (commands, then keys) and the listing of some of them by index.
+std::vector<HelpEntry> help_entries();
+std::string help_listing(const std::vector<std::size_t>& entries);
+
+// The key namespaces get, set, watch, plot, expect and wait take.
+struct KeySpec {
+  std::string_view pattern;  // e.g. "provider:X"
+  std::string_view summary;
+};
+const std::vector<KeySpec>& key_table();
 const CommandSpec* find_command(std::string_view name);  // nullptr if unknown
 std::vector<std::string> command_names();
 
@@ -29,6 +47,7 @@ struct VideoStart {
   long long fps = 25;
 };
 VideoStart parse_video_start(const Words& args);  // args[0] == "start"; throws stride::Error
+DebugSwitch parse_debug_switch(const std::string& word);  // on|off|quiet
 
 // Keys the console reads: representation:X[.path], module:X[.path], sim.*, robot.*, log.*.
 bool is_value_key(std::string_view key);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <new>
 #include <ostream>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "console/interpreter/tokenizer.hpp"
 #include "console/interpreter/values.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
 #include "robot/model/physical_limits.hpp"
@@ -64,7 +66,7 @@ void Interpreter::run_script(const std::string& path) {
       try {
         execute(line);
       } catch (const Error& e) {
-        throw error_at(path, number, e.what());
+        rethrow_at(path, number, e);
       }
     }
   } catch (...) {
@@ -82,7 +84,7 @@ void Interpreter::run_inline(std::string_view commands) {
     try {
       execute(c);
     } catch (const Error& e) {
-      throw error_at("-c", number, e.what());
+      rethrow_at("-c", number, e);
     }
   }
 }
@@ -94,7 +96,7 @@ std::string Interpreter::resolve(const std::string& path) const {
 }
 
 void Interpreter::load(const std::string& path) {
-  const std::string resolved = resolve(path);
+  const std::string resolved = find_input(resolve(path));  // a shipped scene from anywhere
   finish();
   target_.load(resolved);
   out_ << "loaded " << target_.name() << "\n";
@@ -113,60 +115,111 @@ std::uint64_t Interpreter::steps_for(double seconds) const {
   return static_cast<std::uint64_t>(std::llround(seconds / dt));
 }
 
-void Interpreter::after_step() {
-  if (!watch_keys_.empty() && ++steps_since_watch_ >= watch_every_) {
-    steps_since_watch_ = 0;
-    out_ << "t=" << target_.get("sim.time");
-    for (const auto& k : watch_keys_) {
-      std::string v;
-      try {
-        v = target_.get(k);
-      } catch (const Error& e) {
-        v = "?";
-      }
-      out_ << "  " << k << "=" << v;
+void Interpreter::print_watches() {
+  if (watch_keys_.empty() || ++steps_since_watch_ < watch_every_) return;
+  steps_since_watch_ = 0;
+  out_ << "t=" << target_.get("sim.time");
+  for (const auto& k : watch_keys_) {
+    std::string v;
+    try {
+      v = target_.get(k);
+    } catch (const Error& e) {
+      v = "?";
     }
-    out_ << "\n";
+    out_ << "  " << k << "=" << v;
   }
-  if (!plot_keys_.empty()) {
-    std::vector<double> row{std::stod(target_.get("sim.time"))};
-    for (const auto& k : plot_keys_) {
-      double v = std::nan("");
-      try {
-        const std::string text = target_.get(k);
-        v = text == "true" ? 1.0 : text == "false" ? 0.0 : parse_number(text, k);
-      } catch (const Error&) {
-      }
-      row.push_back(v);
+  out_ << "\n";
+}
+
+void Interpreter::record_plot_row() {
+  if (plot_keys_.empty()) return;
+  std::vector<double> row{std::stod(target_.get("sim.time"))};
+  for (const auto& k : plot_keys_) {
+    double v = std::nan("");
+    try {
+      const std::string text = target_.get(k);
+      v = text == "true" ? 1.0 : text == "false" ? 0.0 : parse_number(text, k);
+    } catch (const Error&) {
     }
-    plot_table_.add_row(std::move(row));
+    row.push_back(v);
   }
+  plot_table_.add_row(std::move(row));
+}
+
+bool Interpreter::after_step() {
+  print_watches();
+  record_plot_row();
+  DebugOutput debug = target_.take_debug_output();
+  if (!debug.lines.empty()) {
+    const std::string t = target_.get("sim.time");
+    for (const auto& line : debug.lines) out_ << "t=" << t << " " << line << "\n";
+  }
+  if (debug.stop.empty()) return true;
+  out_ << "paused at t=" << target_.get("sim.time") << ": " << debug.stop << "\n";
+  return false;
+}
+
+void Interpreter::start_pacing() {
+  pace_start_ = std::chrono::steady_clock::now();
+  paced_steps_ = 0;
+}
+
+std::chrono::steady_clock::time_point Interpreter::step_due() const {
+  return pace_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(paced_steps_ * target_.step_seconds()));
 }
 
 bool Interpreter::advance(std::uint64_t steps, const std::function<bool()>& until) {
   if (!target_.loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
-  run_wall_start_ = std::chrono::steady_clock::now();
-  run_sim_start_ = std::stod(target_.get("sim.time"));
-  const double dt = target_.step_seconds();
-  std::uint64_t done = 0;
+  start_pacing();
   bool reached = false;
   target_.advance(steps, [&] {
-    ++done;
-    after_step();
+    ++paced_steps_;
+    if (!after_step()) return false;
     if (until && until()) return !(reached = true);
     if (interrupt_ && interrupt_->exchange(false)) {
       out_ << "paused at t=" << target_.get("sim.time") << "\n";
       return false;
     }
-    if (realtime_) {
-      const auto due =
-          run_wall_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                std::chrono::duration<double>(done * dt));
-      if (due > std::chrono::steady_clock::now()) std::this_thread::sleep_until(due);
-    }
+    if (realtime_) std::this_thread::sleep_until(step_due());
     return true;
   });
   return reached;
+}
+
+std::chrono::steady_clock::duration Interpreter::run_slice(
+    std::chrono::steady_clock::duration budget) {
+  using Clock = std::chrono::steady_clock;
+  if (!running_) return Clock::duration::zero();
+  const auto start = Clock::now();
+  Clock::duration wait = Clock::duration::zero();
+  try {
+    target_.advance(std::numeric_limits<std::uint64_t>::max(), [&] {
+      ++paced_steps_;
+      if (!after_step()) return running_ = false;
+      const auto now = Clock::now();
+      if (realtime_ && step_due() > now) {
+        wait = step_due() - now;  // the REPL reads input until the next step is due
+        return false;
+      }
+      return now - start < budget;
+    });
+  } catch (...) {
+    running_ = false;  // a failing step ends the run; the REPL reports the error
+    throw;
+  }
+  return wait;
+}
+
+void Interpreter::pause_run() {
+  if (!running_) return;
+  running_ = false;
+  out_ << "paused at t=" << target_.get("sim.time") << "\n";
+}
+
+void Interpreter::refuse_while_running(const std::string& command) const {
+  if (running_)
+    throw Error(command + ": the simulation is running in the background (pause first)");
 }
 
 void Interpreter::dispatch(const Command& c) {
@@ -174,17 +227,22 @@ void Interpreter::dispatch(const Command& c) {
   const std::string& n = c.name;
   if (n.empty()) return;
   if (n == "help") return help(a);
+  if (n == "load" || n == "reset") pause_run();  // a new world starts paused
   if (n == "load") return load(a[0]);
   if (n == "reset") {
     target_.reset();
     out_ << "reset " << target_.name() << "\n";
     return;
   }
+  if (n == "run" || n == "step" || n == "wait") refuse_while_running(n);
   if (n == "run") {
-    if (a.empty() && !interrupt_) throw Error("run: give the seconds to run in a script");
-    const std::uint64_t steps =
-        a.empty() ? std::uint64_t(-1) : steps_for(parse_number(a[0], "seconds"));
-    advance(steps, nullptr);
+    if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));
+    if (!interrupt_) throw Error("run: give the seconds to run in a script");
+    if (!target_.loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
+    running_ = true;
+    start_pacing();
+    out_ << "running from t=" << target_.get("sim.time")
+         << " (commands apply between frames; pause or Ctrl-C stops)\n";
     return;
   }
   if (n == "step") {
@@ -194,11 +252,13 @@ void Interpreter::dispatch(const Command& c) {
     return;
   }
   if (n == "pause") {
+    if (running_) return pause_run();
     out_ << "paused at t=" << target_.get("sim.time") << "\n";
     return;
   }
   if (n == "realtime") {
     realtime_ = parse_on_off(a[0], "realtime");
+    start_pacing();  // a background run keeps the wall clock from now on
     return;
   }
   if (n == "get") return get(a);

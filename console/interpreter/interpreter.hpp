@@ -34,18 +34,32 @@ class Interpreter {
   // Writes a pending plot (also done by `plot stop` and the destructor).
   void finish();
   bool quit_requested() const { return quit_; }
-  // Interactive sessions may `run` without a duration (until *interrupt becomes true).
+  // Interactive sessions: `run` without a duration runs in the background (the REPL calls
+  // run_slice() between reading lines, so every command applies between frames); blocking runs
+  // pause when *interrupt becomes true (Ctrl-C).
   void set_interactive(std::atomic<bool>* interrupt) { interrupt_ = interrupt; }
+  bool running() const { return running_; }
+  // Steps the background run for up to `budget` of wall time. Returns how long the REPL may wait
+  // for input before the next step is due (zero: at once; realtime runs wait for the clock).
+  std::chrono::steady_clock::duration run_slice(std::chrono::steady_clock::duration budget);
+  // Ctrl-C during a background run.
+  void pause_run();
   Target& target() { return target_; }
 
  private:
   void dispatch(const Command& c);
   void load(const std::string& path);
   std::string resolve(const std::string& path) const;  // relative to the running script first
-  // Advances up to `steps`; watches, plots, realtime and interrupts apply. `until` (may be null)
-  // stops the run when it returns true. Returns true if `until` became true.
+  // Advances up to `steps`; watches, plots, debug output, realtime and interrupts apply. `until`
+  // (may be null) stops the run when it returns true. Returns true if `until` became true.
   bool advance(std::uint64_t steps, const std::function<bool()>& until);
-  void after_step();
+  // Per step: watches, plots, debug output. False when a debug request asks to pause.
+  bool after_step();
+  void print_watches();
+  void record_plot_row();
+  void start_pacing();  // realtime pacing counts from now
+  std::chrono::steady_clock::time_point step_due() const;
+  void refuse_while_running(const std::string& command) const;
   std::uint64_t steps_for(double seconds) const;
 
   void help(const std::vector<std::string>& a);
@@ -68,6 +82,7 @@ class Interpreter {
   std::atomic<bool>* interrupt_ = nullptr;
   bool quit_ = false;
   bool realtime_ = false;
+  bool running_ = false;  // a background run (interactive `run` without seconds)
   std::vector<std::string> script_stack_;
 
   std::vector<std::string> watch_keys_;
@@ -79,8 +94,8 @@ class Interpreter {
   std::string log_path_;  // log being recorded or last recorded/loaded, for `log save`
   plot::Table plot_table_;
 
-  std::chrono::steady_clock::time_point run_wall_start_;
-  double run_sim_start_ = 0;
+  std::chrono::steady_clock::time_point pace_start_;  // realtime: wall time of step 0
+  std::uint64_t paced_steps_ = 0;                     // steps since pace_start_
   SweepCommand sweep_;
 };
 

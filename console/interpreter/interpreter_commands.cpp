@@ -12,15 +12,7 @@
 namespace stride::console {
 
 void Interpreter::help(const std::vector<std::string>& a) {
-  int shown = 0;
-  for (const auto& s : command_table()) {
-    const bool match = a.empty() || s.name.find(a[0]) != std::string_view::npos ||
-                       s.summary.find(a[0]) != std::string_view::npos;
-    if (!match) continue;
-    out_ << "  " << s.usage << "\n      " << s.summary << "\n";
-    ++shown;
-  }
-  if (shown == 0) out_ << "no command matches '" << a[0] << "'\n";
+  out_ << help_text(a.empty() ? "" : a[0]);
 }
 
 void Interpreter::get(const std::vector<std::string>& a) {
@@ -70,10 +62,10 @@ void Interpreter::debug_request(const std::vector<std::string>& a) {
   if (a[0] == "?") {
     const auto all = target_.debug_requests();
     if (all.empty()) out_ << "(no debug requests)\n";
-    for (const auto& [name, on] : all) out_ << name << " " << (on ? "on" : "off") << "\n";
+    for (const auto& [name, state] : all) out_ << name << " " << debug_switch_name(state) << "\n";
     return;
   }
-  target_.set_debug_request(a[0], parse_on_off(a[1], a[0]));
+  target_.set_debug_request(a[0], parse_debug_switch(a[1]));
 }
 
 void Interpreter::watch(const std::vector<std::string>& a) {
@@ -163,6 +155,8 @@ void Interpreter::log(const std::vector<std::string>& a) {
   } else if (what == "export") {
     target_.log_export(a[1], {a.begin() + 2, a.end()});
     out_ << "wrote " << a[1] << "\n";
+  } else if (what == "info") {
+    for (const auto& line : target_.log_info()) out_ << line << "\n";
   } else if (what == "replay") {
     const ReplaySummary r = target_.log_replay();
     out_ << "replayed " << r.frames << " frames, compared " << r.compared

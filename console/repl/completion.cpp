@@ -133,11 +133,11 @@ std::vector<std::string> complete(const std::vector<std::string>& before, const 
   if (command == "dr") {
     if (position == 1) {
       std::vector<std::string> names{"?"};
-      for (const auto& [n, on] : safely([&] { return target.debug_requests(); }))
+      for (const auto& [n, state] : safely([&] { return target.debug_requests(); }))
         names.push_back(n);
       return starting_with(names, word);
     }
-    return position == 2 ? starting_with({"on", "off"}, word) : std::vector<std::string>{};
+    return position == 2 ? starting_with({"on", "off", "quiet"}, word) : std::vector<std::string>{};
   }
   if (command == "sn") {
     if (position == 1) return starting_with({"noise", "delay", "quantise"}, word);
@@ -151,7 +151,8 @@ std::vector<std::string> complete(const std::vector<std::string>& before, const 
   }
   if (command == "log") {
     if (position == 1)
-      return starting_with({"start", "stop", "load", "goto", "export", "replay"}, word);
+      return starting_with({"start", "stop", "save", "load", "info", "goto", "export", "replay"},
+                           word);
     if (before[1] == "export" && position >= 3) {
       // Log export keys name representations without the prefix: JointRequest.position[3].
       std::vector<std::string> keys;

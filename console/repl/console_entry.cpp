@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "console/cli/exit_codes.hpp"
 #include "console/interpreter/interpreter.hpp"
 #include "console/repl/repl.hpp"
 #include "console/target/local_target.hpp"
@@ -22,18 +23,18 @@ ConsoleArgs read_args(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--script" || a == "-c") {
-      if (i + 1 >= args.size()) throw Error("stride: " + a + ": expected a value");
+      if (i + 1 >= args.size()) throw UsageError("stride: " + a + ": expected a value");
       (a == "--script" ? c.script : c.inline_commands) = args[++i];
       if (a == "-c") c.has_inline = true;
     } else if (a.starts_with("-")) {
-      throw Error("stride: unknown flag '" + a + "' (see stride --help)");
+      throw UsageError("stride: unknown flag '" + a + "' (see stride --help)");
     } else if (c.scene.empty()) {
       c.scene = a;
     } else {
-      throw Error("stride: unexpected argument '" + a + "' (one scene at most)");
+      throw UsageError("stride: unexpected argument '" + a + "' (one scene at most)");
     }
   }
-  if (!c.script.empty() && c.has_inline) throw Error("stride: give --script or -c, not both");
+  if (!c.script.empty() && c.has_inline) throw UsageError("stride: give --script or -c, not both");
   return c;
 }
 
@@ -58,8 +59,7 @@ int console_main(const std::vector<std::string>& args, std::ostream& out, std::o
   try {
     c = read_args(args);
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 2;
+    return cli::report_error(e, err);
   }
   LocalTarget target;
   Interpreter interpreter(target, out);
@@ -71,8 +71,8 @@ int console_main(const std::vector<std::string>& args, std::ostream& out, std::o
     if (batch) interpreter.finish();
   } catch (const Error& e) {
     out.flush();
-    err << e.what() << "\n";
-    if (batch) return 1;
+    const int code = cli::report_error(e, err);
+    if (batch) return code;
   }
   return batch ? 0 : run_repl(interpreter);
 }

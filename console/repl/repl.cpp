@@ -1,30 +1,46 @@
 #include "console/repl/repl.hpp"
 
+#include <poll.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include <readline/history.h>
 #include <readline/readline.h>
 
 #include "console/interpreter/tokenizer.hpp"
 #include "console/repl/completion.hpp"
+#include "console/repl/terminal_output.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::console {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+// A background run steps this long between looks at the keyboard.
+constexpr auto kSlice = std::chrono::milliseconds(20);
+
 // readline's C callbacks and the signal handler take no user data, so the session they serve
 // is reachable only from here, set for the duration of run_repl.
 Target* g_completion_target = nullptr;
 std::atomic<bool> g_interrupt{false};
 std::vector<std::string> g_matches;
+struct TerminalSession {
+  Interpreter* interpreter = nullptr;
+  TerminalOutput* output = nullptr;
+  std::string history;
+  bool ended = false;  // Ctrl-D
+};
+TerminalSession* g_terminal = nullptr;
 
 void on_interrupt(int) {
   g_interrupt = true;
@@ -57,13 +73,141 @@ std::string history_path() {
   return std::string(home ? home : ".") + "/.stride_history";
 }
 
-int plain_loop(Interpreter& interpreter) {
-  std::string line;
-  while (!interpreter.quit_requested() && std::getline(std::cin, line)) {
-    g_interrupt = false;
-    interpreter.execute_reporting(line);
+// Waits for input on stdin until it arrives, `timeout` passes (negative: forever) or a signal.
+bool input_ready(int timeout_ms) {
+  pollfd p{STDIN_FILENO, POLLIN, 0};
+  return ::poll(&p, 1, timeout_ms) > 0;
+}
+
+int milliseconds_until(Clock::duration wait) {
+  return static_cast<int>(std::chrono::ceil<std::chrono::milliseconds>(wait).count());
+}
+
+// The loop both inputs share: read what has arrived (each complete line runs as a command,
+// between frames), step a background run a slice at a time, pause it on Ctrl-C.
+template <class Input>
+void event_loop(Interpreter& interpreter, Input& input) {
+  Clock::duration wait = Clock::duration::zero();
+  while (!interpreter.quit_requested() && !input.ended()) {
+    const bool ready = input_ready(interpreter.running() ? milliseconds_until(wait) : -1);
+    if (g_interrupt.exchange(false)) {
+      if (interpreter.running())
+        interpreter.pause_run();
+      else
+        input.cancel_line();
+    }
+    if (ready) input.read();
+    if (!interpreter.running()) continue;
+    try {
+      wait = interpreter.run_slice(kSlice);
+    } catch (const Error& e) {
+      std::cout << "error: " << e.what() << "\n";
+    }
+    std::cout.flush();
   }
-  return 0;
+}
+
+// Lines from a pipe or file: no prompt, no editing.
+class PipeInput {
+ public:
+  explicit PipeInput(Interpreter& interpreter) : interpreter_(interpreter) {}
+  bool ended() const { return ended_; }
+  void cancel_line() {}
+  void read() {
+    char chunk[4096];
+    const ssize_t n = ::read(STDIN_FILENO, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) return;
+    if (n <= 0) {
+      ended_ = true;
+      if (!buffer_.empty()) run(std::exchange(buffer_, std::string()));
+      return;
+    }
+    buffer_.append(chunk, static_cast<std::size_t>(n));
+    for (auto end = buffer_.find('\n'); end != std::string::npos && !interpreter_.quit_requested();
+         end = buffer_.find('\n')) {
+      const std::string line = buffer_.substr(0, end);
+      buffer_.erase(0, end + 1);
+      run(line);
+    }
+  }
+
+ private:
+  void run(const std::string& line) {
+    interpreter_.execute_reporting(line);
+    std::cout.flush();
+  }
+  Interpreter& interpreter_;
+  std::string buffer_;
+  bool ended_ = false;
+};
+
+void on_terminal_line(char* raw) {
+  TerminalSession& s = *g_terminal;
+  if (!raw) {
+    s.ended = true;  // Ctrl-D
+    return;
+  }
+  const std::string line(raw);
+  std::free(raw);
+  if (line.find_first_not_of(" \t") == std::string::npos) return;
+  add_history(line.c_str());
+  append_history(1, s.history.c_str());
+  s.output->set_prompt_shown(false);
+  s.interpreter->execute_reporting(line);
+  std::cout.flush();
+  s.output->set_prompt_shown(true);
+}
+
+// The keyboard through readline's callback interface, so reading never blocks a running
+// simulation.
+class TerminalInput {
+ public:
+  explicit TerminalInput(TerminalSession& session) : session_(session) {
+    rl_callback_handler_install("stride> ", on_terminal_line);
+    session_.output->set_prompt_shown(true);
+  }
+  ~TerminalInput() {
+    session_.output->set_prompt_shown(false);
+    rl_callback_handler_remove();
+  }
+  bool ended() const { return session_.ended; }
+  void read() { rl_callback_read_char(); }
+  void cancel_line() {  // Ctrl-C at the prompt: drop the typed line, as a shell does
+    session_.output->set_prompt_shown(false);
+    rl_callback_sigcleanup();
+    rl_replace_line("", 0);
+    std::fputs("^C\n", stdout);
+    rl_on_new_line();
+    rl_redisplay();
+    session_.output->set_prompt_shown(true);
+  }
+
+ private:
+  TerminalSession& session_;
+};
+
+void terminal_loop(Interpreter& interpreter) {
+  rl_readline_name = "stride";
+  rl_catch_signals = 0;  // Ctrl-C is ours: it pauses a run or drops the typed line
+  rl_completer_word_break_characters = const_cast<char*>(" \t");
+  rl_attempted_completion_function = attempt_completion;
+  TerminalOutput output(std::cout.rdbuf());
+  std::streambuf* const previous = std::cout.rdbuf(&output);
+  TerminalSession session{&interpreter, &output, history_path()};
+  g_terminal = &session;
+  using_history();
+  if (read_history(session.history.c_str()) != 0) write_history(session.history.c_str());
+  std::cout << "stride console on " << interpreter.target().name()
+            << " (help lists commands, Tab completes, quit leaves)\n";
+  {
+    TerminalInput input(session);
+    event_loop(interpreter, input);
+  }
+  history_truncate_file(session.history.c_str(), 1000);
+  std::cout << "\n";
+  std::cout.flush();
+  std::cout.rdbuf(previous);
+  g_terminal = nullptr;
 }
 
 }  // namespace
@@ -72,37 +216,16 @@ int run_repl(Interpreter& interpreter) {
   g_completion_target = &interpreter.target();
   interpreter.set_interactive(&g_interrupt);
   struct sigaction action {};
-  action.sa_handler = on_interrupt;
+  action.sa_handler = on_interrupt;  // no SA_RESTART: Ctrl-C wakes the wait for input
   sigemptyset(&action.sa_mask);
   struct sigaction previous {};
   sigaction(SIGINT, &action, &previous);
-  if (!isatty(STDIN_FILENO)) {
-    const int rc = plain_loop(interpreter);
-    sigaction(SIGINT, &previous, nullptr);
-    return rc;
+  if (isatty(STDIN_FILENO)) {
+    terminal_loop(interpreter);
+  } else {
+    PipeInput input(interpreter);
+    event_loop(interpreter, input);
   }
-  rl_readline_name = "stride";
-  rl_completer_word_break_characters = const_cast<char*>(" \t");
-  rl_attempted_completion_function = attempt_completion;
-  const std::string history = history_path();
-  using_history();
-  if (read_history(history.c_str()) != 0) write_history(history.c_str());  // create it
-  std::cout << "stride console on " << interpreter.target().name()
-            << " (help lists commands, Tab completes, quit leaves)\n";
-  while (!interpreter.quit_requested()) {
-    char* raw = readline("stride> ");
-    if (!raw) break;  // Ctrl-D
-    const std::string line(raw);
-    std::free(raw);
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    add_history(line.c_str());
-    append_history(1, history.c_str());
-    g_interrupt = false;
-    interpreter.execute_reporting(line);
-    std::cout.flush();
-  }
-  history_truncate_file(history.c_str(), 1000);
-  std::cout << "\n";
   sigaction(SIGINT, &previous, nullptr);
   g_completion_target = nullptr;
   return 0;

@@ -51,7 +51,8 @@ void SimSession::attach_controllers() {
     try {
       runtimes[i] = std::make_unique<Runtime>(registry_, runtime_config(i), link);
     } catch (const Error& e) {
-      throw error_at(placement.file, placement.line, "<controller>: " + std::string(e.what()));
+      throw input_error_at(placement.file, placement.line,
+                           "<controller>: " + std::string(e.what()));
     }
     check_changes(registry_, runtime_config(i), link, placement.controller.changes);
   }

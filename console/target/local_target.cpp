@@ -1,10 +1,13 @@
 #include "console/target/local_target.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <fstream>
 #include <sstream>
 
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/runtime/recorded_config.hpp"
 #include "robot/runtime/replay.hpp"
 #include "simulator/run_report.hpp"
 #include "simulator/teleport.hpp"
@@ -17,6 +20,11 @@ std::string number_text(double v) {
   o.precision(10);
   o << v;
   return o.str();
+}
+// All the digits a double needs to read back the same: debug values are the module's own.
+std::string exact_text(double v) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 }  // namespace
 
@@ -96,15 +104,40 @@ double LocalTarget::step_seconds() const {
   return session_ ? session_->simulation().scene().physics.step : 0.0;
 }
 
-std::string LocalTarget::sim_value(const std::string& key) {
-  if (key.starts_with("provider:")) {
-    const std::string rep = key.substr(9);
-    const auto names = runtime().representation_names();
-    if (std::find(names.begin(), names.end(), rep) == names.end())
-      throw Error("no representation '" + rep + "' on the blackboard");
-    const std::string by = runtime().provider_of(rep);
-    return by.empty() ? "(built-in)" : by;
+std::string LocalTarget::controller_value(const std::string& key) {
+  Runtime& rt = runtime();
+  if (key.starts_with("debug:")) {
+    const std::string name = key.substr(6);
+    const auto& values = rt.debug_values();
+    if (const auto it = values.find(name); it != values.end()) return exact_text(it->second);
+    const auto dot = name.rfind('.');
+    const std::string request = name.substr(0, dot);
+    std::string emitted;  // the request's values so far
+    for (const auto& [value, v] : values)
+      if (value.starts_with(request + ".")) emitted += (emitted.empty() ? "" : ", ") + value;
+    for (const auto& [n, state] : rt.debug_requests()) {
+      if (n != request) continue;
+      if (!emitted.empty()) throw Error(key + ": no such value (" + emitted + ")");
+      if (state == DebugSwitch::Off) throw Error(key + ": switch it on first (dr " + n + " on)");
+      return "nan";  // on, but its module has not run since
+    }
+    throw Error(key + ": no debug request '" + request + "' (dr ? lists them)");
   }
+  const std::string rep = key.substr(key.find(':') + 1);
+  const auto names = rt.representation_names();
+  if (std::find(names.begin(), names.end(), rep) == names.end())
+    throw Error("no representation '" + rep + "' on the blackboard");
+  if (key.starts_with("override:")) {
+    const auto it = rt.overrides().find(rep);
+    return it == rt.overrides().end() ? "(none)" : it->second;
+  }
+  const std::string by = rt.provider_of(rep);
+  return by.empty() ? "(built-in)" : by;
+}
+
+std::string LocalTarget::sim_value(const std::string& key) {
+  if (key.starts_with("provider:") || key.starts_with("override:") || key.starts_with("debug:"))
+    return controller_value(key);
   if (key == "log.frames" || key == "log.complete" || key == "log.damaged" ||
       key == "log.truncated") {
     if (!log_) throw Error(key + ": no log loaded (log load <file>)");
@@ -137,10 +170,10 @@ std::string LocalTarget::sim_value(const std::string& key) {
   if (key == "robot.com.x") return number_text(com.x());
   if (key == "robot.com.y") return number_text(com.y());
   if (key == "robot.com.z") return number_text(com.z());
-  throw Error(
-      "unknown key '" + key +
-      "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
-      "robot.com.x|y|z, log.frames|complete|damaged|truncated|mismatches|compared|replayed)");
+  throw Error("unknown key '" + key +
+              "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
+              "robot.com.x|y|z, log.frames|complete|damaged|truncated|mismatches|compared|"
+              "replayed, provider:, override:, debug:)");
 }
 
 std::string LocalTarget::get(const std::string& key) {
@@ -177,11 +210,27 @@ void LocalTarget::swap_provider(const std::string& rep, const std::string& modul
   else
     swapped_.insert(selected_);
 }
-std::vector<std::pair<std::string, bool>> LocalTarget::debug_requests() {
+std::vector<std::pair<std::string, DebugSwitch>> LocalTarget::debug_requests() {
   return runtime().debug_requests();
 }
-void LocalTarget::set_debug_request(const std::string& name, bool on) {
-  runtime().set_debug_request(name, on);
+void LocalTarget::set_debug_request(const std::string& name, DebugSwitch state) {
+  runtime().set_debug_request(name, state);
+}
+
+DebugOutput LocalTarget::take_debug_output() {
+  DebugOutput d;
+  if (!session_) return d;
+  auto& sim = session_->simulation();
+  for (int i = 0; i < sim.robot_count(); ++i) {
+    Runtime* rt = session_->runtime(i);
+    if (!rt) continue;
+    // With several robots every line says whose it is.
+    const std::string who = sim.robot_count() > 1 ? sim.robot(i).name() + " " : "";
+    for (auto& line : rt->take_debug_lines()) d.lines.push_back(who + line);
+    if (std::string stop = rt->take_debug_stop(); !stop.empty() && d.stop.empty())
+      d.stop = who + stop;
+  }
+  return d;
 }
 
 void LocalTarget::log_start(const std::string& path) {
@@ -222,10 +271,11 @@ void LocalTarget::log_export(const std::string& csv_path, const std::vector<std:
 ReplaySummary LocalTarget::log_replay() {
   if (!log_) throw Error("no log loaded (log load <file>)");
   runtime();  // the selected robot has a controller
-  if (swapped_.count(selected_))
-    throw Error("a provider was swapped; the replay uses the scene's configuration");
+  if (swapped_.count(selected_) && !has_recorded_config(log_->metadata()))
+    throw Error("a provider was swapped and this log does not say which it ran with");
   const ReplayResult r =
-      replay_and_compare(*log_, session().registry(), session().runtime_config(selected_));
+      replay_and_compare(*log_, session().registry(),
+                         recorded_config(log_->metadata(), session().runtime_config(selected_)));
   ReplaySummary s;
   s.frames = r.frames;
   s.compared = r.compared.size();
@@ -237,6 +287,11 @@ ReplaySummary LocalTarget::log_replay() {
                            r.mismatches[i].representation);
   replay_ = s;
   return s;
+}
+
+std::vector<std::string> LocalTarget::log_info() {
+  if (!log_) throw Error("no log loaded (log load <file>)");
+  return log_info_lines(*log_);
 }
 
 std::string LocalTarget::report_text() {

@@ -37,8 +37,9 @@ class LocalTarget final : public Target {
   std::string provider_of(const std::string& representation) override;
   std::vector<std::string> providers_available(const std::string& representation) override;
   void swap_provider(const std::string& representation, const std::string& module) override;
-  std::vector<std::pair<std::string, bool>> debug_requests() override;
-  void set_debug_request(const std::string& name, bool on) override;
+  std::vector<std::pair<std::string, DebugSwitch>> debug_requests() override;
+  void set_debug_request(const std::string& name, DebugSwitch state) override;
+  DebugOutput take_debug_output() override;
 
   void log_start(const std::string& path) override;
   void log_stop() override;
@@ -46,6 +47,7 @@ class LocalTarget final : public Target {
   std::vector<std::string> log_goto(std::size_t frame) override;
   void log_export(const std::string& csv_path, const std::vector<std::string>& keys) override;
   ReplaySummary log_replay() override;
+  std::vector<std::string> log_info() override;
 
   std::string report_text() override;
   std::string report_json() override;
@@ -64,6 +66,7 @@ class LocalTarget final : public Target {
   sim::SimulatedRobot& robot();  // the selected one; throws without robots
   render::WorldRenderer& renderer();
   std::string sim_value(const std::string& key);
+  std::string controller_value(const std::string& key);  // provider:, override:, debug: keys
 
   std::unique_ptr<SimSession> session_;
   std::unique_ptr<LogReader> log_;

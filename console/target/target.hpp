@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "robot/framework/module.hpp"
 #include "robot/framework/type_desc.hpp"
 
 namespace stride::console {
@@ -19,6 +20,12 @@ struct ReplaySummary {
   std::size_t mismatch_count = 0;
   std::size_t stopped_at = 0;  // first damaged frame, where the replay stopped (0: none)
   bool stopped = false;
+};
+
+// What the debug requests of the target's modules emitted since the last take_debug_output().
+struct DebugOutput {
+  std::vector<std::string> lines;  // "request: text"
+  std::string stop;                // non-empty: a request asks to pause the run, saying why
 };
 
 class Target {
@@ -43,7 +50,8 @@ class Target {
 
   // Values: representation:X[.path], module:X[.path], sim.time, sim.steps, sim.hash,
   // robot.torso.{x,y,z,roll,pitch,yaw}, robot.fell, robot.com.{x,y,z},
-  // log.frames|complete|damaged|truncated, log.mismatches, provider:<Rep>.
+  // log.frames|complete|damaged|truncated, log.mismatches, provider:<Rep>,
+  // override:<Rep> (the held assignments), debug:<request>.<value>.
   virtual std::string get(const std::string& key) = 0;
   virtual const TypeDesc& type_of(const std::string& key) = 0;
   virtual void set(const std::string& key, const std::string& fields) = 0;
@@ -53,8 +61,9 @@ class Target {
   virtual std::string provider_of(const std::string& representation) = 0;
   virtual std::vector<std::string> providers_available(const std::string& representation) = 0;
   virtual void swap_provider(const std::string& representation, const std::string& module) = 0;
-  virtual std::vector<std::pair<std::string, bool>> debug_requests() = 0;
-  virtual void set_debug_request(const std::string& name, bool on) = 0;
+  virtual std::vector<std::pair<std::string, DebugSwitch>> debug_requests() = 0;
+  virtual void set_debug_request(const std::string& name, DebugSwitch state) = 0;
+  virtual DebugOutput take_debug_output() = 0;
 
   virtual void log_start(const std::string& path) = 0;
   virtual void log_stop() = 0;
@@ -64,6 +73,9 @@ class Target {
   virtual std::vector<std::string> log_goto(std::size_t frame) = 0;
   virtual void log_export(const std::string& csv_path, const std::vector<std::string>& keys) = 0;
   virtual ReplaySummary log_replay() = 0;
+  // The loaded log's frames, representations and recorded providers (robot/runtime/
+  // recorded_config.hpp).
+  virtual std::vector<std::string> log_info() = 0;
 
   virtual std::string report_text() = 0;
   virtual std::string report_json() = 0;

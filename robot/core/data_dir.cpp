@@ -27,7 +27,7 @@ fs::path executable_dir() {
 fs::path data_dir() {
   if (const char* env = std::getenv("STRIDE_DATA"); env && *env) {
     if (!holds_scenes(env))
-      throw Error("STRIDE_DATA='" + std::string(env) + "' has no scenes/ directory");
+      throw InputError("STRIDE_DATA='" + std::string(env) + "' has no scenes/ directory");
     return fs::path(env);
   }
   std::vector<fs::path> tried;
@@ -38,7 +38,7 @@ fs::path data_dir() {
     if (holds_scenes(dir)) return dir;
   std::string list;
   for (const auto& dir : tried) list += (list.empty() ? "" : ", ") + dir.string();
-  throw Error("no data directory with scenes/ (looked in " + list + "; set STRIDE_DATA)");
+  throw InputError("no data directory with scenes/ (looked in " + list + "; set STRIDE_DATA)");
 }
 
 std::string data_file(const std::string& relative) {

@@ -56,7 +56,7 @@ std::string input_file_problem(const std::string& path, std::uint64_t max_bytes)
 std::string read_input_file(const std::string& path, std::uint64_t max_bytes,
                             const std::string& what) {
   const auto fail = [&](const std::string& reason) {
-    return Error(what + " '" + path + "': " + reason);
+    return InputError(what + " '" + path + "': " + reason);
   };
   // O_NONBLOCK: opening a FIFO must not wait for a writer before fstat can refuse it.
   Fd f{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};

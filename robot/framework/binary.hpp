@@ -93,8 +93,9 @@ TypeDescPtr make_desc() {
     d->name = std::string(Reflect<T>::type_name());
     for_each_field<T>([&](const auto& f) {
       using M = std::remove_cvref_t<decltype(std::declval<T&>().*(f.member))>;
-      d->fields.push_back(
-          FieldDesc{std::string(f.name), std::string(f.unit), f.range, describe<M>()});
+      TypeDescPtr type = describe<M>();
+      if (!f.element_names.empty()) type = with_element_names(type, f.element_names);
+      d->fields.push_back(FieldDesc{std::string(f.name), std::string(f.unit), f.range, type});
     });
     return d;
   } else {

@@ -12,10 +12,15 @@
 // The constructor only binds (it is also run to learn the declarations); the references stay
 // valid for the module's lifetime. Parameters change only between frames.
 #include <bitset>
+#include <cstdint>
+#include <initializer_list>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <typeindex>
+#include <utility>
+#include <vector>
 
 #include "robot/framework/slot.hpp"
 
@@ -24,17 +29,47 @@ namespace model {
 struct RobotModel;
 }
 
+namespace model {
+struct RobotModel;
+}
+
 inline constexpr int kMaxDebugRequests = 256;
 using DebugRequestBits = std::bitset<kMaxDebugRequests>;
+// A debug request off, on, or on without printing (values and stops only).
+enum class DebugSwitch : std::uint8_t { Off, On, Quiet };
+std::string_view debug_switch_name(DebugSwitch s);  // "off", "on", "quiet"
 
-// A named switch owned by the Runtime; testing it is one bit lookup.
+inline constexpr std::size_t kMaxDebugLines = 10000;  // undrained lines beyond this are counted
+
+// The Runtime's debug requests and what they emitted since the console (or debug server) last
+// took it: printed lines, plotted values (latest per name), and a request to pause the run.
+struct DebugChannel {
+  DebugRequestBits bits;
+  DebugRequestBits quiet;          // on without printing: values and stops only
+  std::vector<std::string> names;  // request index -> name, e.g. "posture:corrections"
+  std::vector<std::string> lines;  // "name: text", oldest first
+  std::size_t dropped_lines = 0;
+  std::map<std::string, double, std::less<>> values;  // "name.value" -> latest
+  std::string stop;                                   // first stop reason not yet taken
+};
+
+// A named switch owned by the Runtime; testing it is one bit lookup. Output calls do nothing
+// while the request is off, so a module may call them unconditionally.
 class DebugRequest {
  public:
-  DebugRequest(const DebugRequestBits* bits, int index) : bits_(bits), index_(index) {}
-  bool on() const { return bits_->test(index_); }
+  DebugRequest(DebugChannel* channel, int index) : channel_(channel), index_(index) {}
+  bool on() const { return channel_->bits.test(index_); }
+  // A line for the console, shown as "name: text" (not while the request is quiet).
+  void print(std::string_view text) const;
+  // A value the console reads as debug:<name>.<value> (get, watch, plot).
+  void plot(std::string_view value, double v) const;
+  // Prints "a=1.5 b=-0.25" and plots each value: what most requests do every frame.
+  void show(std::initializer_list<std::pair<std::string_view, double>> values) const;
+  // Asks whoever runs the frames to pause after this one, saying why.
+  void stop(std::string_view reason) const;
 
  private:
-  const DebugRequestBits* bits_;
+  DebugChannel* channel_;
   int index_;
 };
 

@@ -26,4 +26,14 @@ class ModuleRegistry {
   std::map<std::string, ModuleFactory> factories_;
 };
 
+// The model a ModuleContext hands out while modules are only being declared: no links, no joints.
+const model::RobotModel& empty_robot_model();
+
+// Every registered module's parameter struct at its defaults (module -> slot), learned by
+// constructing each module once as the Runtime does; modules without parameters are left out.
+std::map<std::string, std::unique_ptr<Slot>> default_parameters(const ModuleRegistry& registry);
+
+// One line per parameter field: "Module.field = default [unit] in [min, max]", for `--set ?`.
+std::vector<std::string> parameter_lines(const ModuleRegistry& registry);
+
 }  // namespace stride

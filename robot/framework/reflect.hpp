@@ -15,6 +15,7 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -33,6 +34,15 @@ struct Field {
   Member Owner::*member;
   std::string_view unit;
   std::optional<Range> range;
+  std::span<const std::string_view> element_names{};  // an array's elements by name
+
+  // The same field with its array elements named, e.g. by joint: text shows
+  // [HeadYaw=0, ...] and paths may say position[LAnklePitch].
+  constexpr Field named(std::span<const std::string_view> names) const {
+    Field f = *this;
+    f.element_names = names;
+    return f;
+  }
 };
 
 template <class Owner, class Member>

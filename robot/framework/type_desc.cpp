@@ -1,6 +1,7 @@
 #include "robot/framework/type_desc.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 namespace stride {
 
@@ -34,6 +35,11 @@ void describe_into(const TypeDesc& d, int indent, std::ostringstream& out) {
       out << (i ? "|" : "") << leaf->enumerators[i];
     out << ")";
   }
+  if (d.kind == Kind::Array && !d.element_names.empty()) {
+    out << " (elements:";
+    for (const auto& n : d.element_names) out << " " << n;
+    out << ")";
+  }
   if (leaf->kind != Kind::Struct) return;
   for (const auto& f : leaf->fields) {
     out << "\n" << std::string(indent, ' ') << f.name << ": " << type_label(*f.type);
@@ -42,6 +48,10 @@ void describe_into(const TypeDesc& d, int indent, std::ostringstream& out) {
     describe_into(*f.type, indent + 2, out);
   }
 }
+
+// The array flags byte; older descriptions have 0 or 1 and read the same.
+constexpr std::uint8_t kVectorComponents = 1;
+constexpr std::uint8_t kNamedElements = 2;  // followed by `length` names
 
 constexpr int kMaxDepth = 32;  // a hostile description must not exhaust the stack
 constexpr std::uint64_t kMaxArrayLength = 1 << 20;  // nor the memory
@@ -61,13 +71,21 @@ TypeDescPtr read_desc(ByteReader& r, int depth) {
       for (std::uint32_t i = 0; i < n; ++i) d->enumerators.push_back(r.get_string());
       break;
     }
-    case Kind::Array:
+    case Kind::Array: {
       d->length = r.get<std::uint64_t>();
       if (d->length > kMaxArrayLength)
         throw Error("type description: array length " + std::to_string(d->length) + " too large");
-      d->vector_components = r.get<std::uint8_t>() != 0;
+      const auto flags = r.get<std::uint8_t>();
+      if (flags > (kVectorComponents | kNamedElements))
+        throw Error("type description: unknown array flags " + std::to_string(flags));
+      d->vector_components = (flags & kVectorComponents) != 0;
+      if (flags & kNamedElements) {
+        if (d->length > r.remaining()) throw Error("type description: too many element names");
+        for (std::size_t i = 0; i < d->length; ++i) d->element_names.push_back(r.get_string());
+      }
       d->element = read_desc(r, depth + 1);
       break;
+    }
     case Kind::List:
       d->element = read_desc(r, depth + 1);
       break;
@@ -102,7 +120,9 @@ std::string describe_text(const TypeDesc& d) {
   return out.str();
 }
 
-void write_type_desc(ByteWriter& w, const TypeDesc& d) {
+namespace {
+
+void write_desc(ByteWriter& w, const TypeDesc& d, bool names) {
   w.put(static_cast<std::uint8_t>(d.kind));
   w.put_string(d.name);
   switch (d.kind) {
@@ -110,13 +130,18 @@ void write_type_desc(ByteWriter& w, const TypeDesc& d) {
       w.put(static_cast<std::uint32_t>(d.enumerators.size()));
       for (const auto& e : d.enumerators) w.put_string(e);
       break;
-    case Kind::Array:
+    case Kind::Array: {
       w.put(static_cast<std::uint64_t>(d.length));
-      w.put(static_cast<std::uint8_t>(d.vector_components));
-      write_type_desc(w, *d.element);
+      const bool named = names && !d.element_names.empty();
+      w.put(static_cast<std::uint8_t>((d.vector_components ? kVectorComponents : 0) |
+                                      (named ? kNamedElements : 0)));
+      if (named)
+        for (const auto& n : d.element_names) w.put_string(n);
+      write_desc(w, *d.element, names);
       break;
+    }
     case Kind::List:
-      write_type_desc(w, *d.element);
+      write_desc(w, *d.element, names);
       break;
     case Kind::Struct:
       w.put(static_cast<std::uint32_t>(d.fields.size()));
@@ -128,12 +153,18 @@ void write_type_desc(ByteWriter& w, const TypeDesc& d) {
           w.put(f.range->min);
           w.put(f.range->max);
         }
-        write_type_desc(w, *f.type);
+        write_desc(w, *f.type, names);
       }
       break;
     default:
       break;
   }
+}
+
+}  // namespace
+
+void write_type_desc(ByteWriter& w, const TypeDesc& d) {
+  write_desc(w, d, true);
 }
 
 TypeDescPtr read_type_desc(ByteReader& r) {
@@ -143,9 +174,24 @@ TypeDescPtr read_type_desc(ByteReader& r) {
 bool same_type(const TypeDesc& a, const TypeDesc& b) {
   std::string x, y;
   ByteWriter wx(x), wy(y);
-  write_type_desc(wx, a);
-  write_type_desc(wy, b);
+  write_desc(wx, a, false);
+  write_desc(wy, b, false);
   return x == y;
+}
+
+TypeDescPtr with_element_names(const TypeDescPtr& array, std::span<const std::string_view> names) {
+  if (array->kind != Kind::Array || array->length != names.size())
+    throw std::logic_error("element names need an array of " + std::to_string(names.size()) +
+                           " elements, not " + type_label(*array));
+  auto named = std::make_shared<TypeDesc>(*array);
+  named->element_names.assign(names.begin(), names.end());
+  return named;
+}
+
+int element_index(const TypeDesc& array, std::string_view name) {
+  for (std::size_t i = 0; i < array.element_names.size(); ++i)
+    if (array.element_names[i] == name) return static_cast<int>(i);
+  return -1;
 }
 
 }  // namespace stride

@@ -71,9 +71,11 @@ void print_into(const TypeDesc& d, const Value& v, std::string& out) {
     case Kind::Array:
     case Kind::List: {
       const auto& items = std::get<Value::List>(v.data);
+      const bool named = d.element_names.size() == items.size();
       out += '[';
       for (std::size_t i = 0; i < items.size(); ++i) {
         if (i) out += ", ";
+        if (named) out += d.element_names[i] + "=";
         print_into(*d.element, items[i], out);
       }
       out += ']';
@@ -124,12 +126,17 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
       if (close == std::string_view::npos)
         throw fail("expected ']' in path '" + std::string(path) + "'");
       const auto digits = path.substr(i + 1, close - i - 1);
-      std::size_t index = 0;
-      auto res = std::from_chars(digits.data(), digits.data() + digits.size(), index);
-      if (res.ec != std::errc() || res.ptr != digits.data() + digits.size())
-        throw fail("expected an index in [], got '" + std::string(digits) + "'");
       if (t.desc->kind != Kind::Array && t.desc->kind != Kind::List)
         throw fail("is a " + type_label(*t.desc) + ", not an array");
+      std::size_t index = 0;
+      auto res = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+      if (res.ec != std::errc() || res.ptr != digits.data() + digits.size()) {
+        const int named = element_index(*t.desc, digits);
+        if (named < 0 && !t.desc->element_names.empty())
+          throw fail("no element '" + std::string(digits) + "' (get <key> ? lists the names)");
+        if (named < 0) throw fail("expected an index in [], got '" + std::string(digits) + "'");
+        index = static_cast<std::size_t>(named);
+      }
       auto& items = std::get<Value::List>(t.value->data);
       where.append("[").append(digits).append("]");
       if (index >= items.size())
@@ -227,6 +234,27 @@ class Parser {
              const std::optional<Range>& range);
 
  private:
+  // "[LAnklePitch=0.1, RAnklePitch=0.1]" after the '[': sets the named elements, keeps the rest.
+  // Returns false, reading nothing, if the first element has no name.
+  bool parse_named_elements(const TypeDesc& d, Value::List& items, const std::string& where,
+                            const std::optional<Range>& range) {
+    if (d.element_names.empty()) return false;
+    const std::size_t start = pos_;
+    word();
+    const bool named = accept('=');
+    pos_ = start;
+    if (!named) return false;
+    while (!accept(']')) {
+      if (at_end()) fail(where, "']'");
+      const auto name = word();
+      const int i = element_index(d, name);
+      if (i < 0) fail_at(where, name, "an element name (get <key> ? lists them)");
+      if (!accept('=')) fail(where + "[" + std::string(name) + "]", "'='");
+      parse(*d.element, items[i], where + "[" + std::string(name) + "]", range);
+    }
+    return true;
+  }
+
   void check_range(const std::string& where, double x, std::string_view token,
                    const std::optional<Range>& range) {
     if (range && !(x >= range->min && x <= range->max))
@@ -299,6 +327,7 @@ void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
     case Kind::List: {
       if (!accept('[')) fail(where, "'['");
       auto& items = std::get<Value::List>(v.data);
+      if (parse_named_elements(d, items, where, range)) return;
       std::size_t n = 0;
       for (;; ++n) {
         skip_space();
@@ -489,8 +518,10 @@ void csv_columns(const TypeDesc& d, const std::string& prefix, std::vector<std::
     for (const auto& f : d.fields)
       csv_columns(*f.type, prefix.empty() ? f.name : prefix + "." + f.name, out);
   } else if (d.kind == Kind::Array) {
+    const bool named = d.element_names.size() == d.length;
     for (std::size_t i = 0; i < d.length; ++i)
-      csv_columns(*d.element, prefix + "[" + std::to_string(i) + "]", out);
+      csv_columns(*d.element, prefix + "[" + (named ? d.element_names[i] : std::to_string(i)) + "]",
+                  out);
   } else {
     out.push_back(prefix);
   }

@@ -153,7 +153,14 @@ RobotModel parse_urdf(const std::string& xml, const std::string& source_name) {
 
 RobotModel load_urdf(const std::string& given) {
   const std::string path = find_input(given);  // a shipped robot from any working directory
-  return parse_urdf(read_input_file(path, kMaxTextInputBytes, "URDF file"), path);
+  const std::string text = read_input_file(path, kMaxTextInputBytes, "URDF file");
+  try {
+    return parse_urdf(text, path);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError(e.what());
+  }
 }
 
 }  // namespace stride::model

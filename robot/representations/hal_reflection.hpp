@@ -17,9 +17,11 @@ struct Reflect<hal::SensorFrame> {
   using S = hal::SensorFrame;
   static constexpr std::string_view type_name() { return "SensorFrame"; }
   static constexpr auto fields() {
-    return std::make_tuple(field("time", &S::time, "s"), field("position", &S::position, "rad"),
-                           field("stiffness", &S::stiffness), field("current", &S::current, "A"),
-                           field("temperature", &S::temperature, "degC"),
+    return std::make_tuple(field("time", &S::time, "s"),
+                           field("position", &S::position, "rad").named(hal::kJointNames),
+                           field("stiffness", &S::stiffness).named(hal::kJointNames),
+                           field("current", &S::current, "A").named(hal::kJointNames),
+                           field("temperature", &S::temperature, "degC").named(hal::kJointNames),
                            field("accelerometer", &S::accelerometer, "m/s^2"),
                            field("gyroscope", &S::gyroscope, "rad/s"),
                            field("angles", &S::angles, "rad"), field("fsr", &S::fsr, "N"),
@@ -34,9 +36,11 @@ struct Reflect<hal::ActuatorFrame> {
   using A = hal::ActuatorFrame;
   static constexpr std::string_view type_name() { return "ActuatorFrame"; }
   static constexpr auto fields() {
-    return std::make_tuple(field("mode", &A::mode), field("position", &A::position, "rad"),
-                           field("stiffness", &A::stiffness, "", Range{0, 1}),
-                           field("torque", &A::torque, "N*m"));
+    return std::make_tuple(
+        field("mode", &A::mode).named(hal::kJointNames),
+        field("position", &A::position, "rad").named(hal::kJointNames),
+        field("stiffness", &A::stiffness, "", Range{0, 1}).named(hal::kJointNames),
+        field("torque", &A::torque, "N*m").named(hal::kJointNames));
   }
 };
 

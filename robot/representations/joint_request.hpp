@@ -13,9 +13,11 @@ struct JointRequest {
   static constexpr std::string_view kTypeName = "JointRequest";
   static constexpr auto fields() {
     using R = JointRequest;
-    return std::make_tuple(field("mode", &R::mode), field("position", &R::position, "rad"),
-                           field("stiffness", &R::stiffness, "", Range{0, 1}),
-                           field("torque", &R::torque, "N*m"));
+    return std::make_tuple(
+        field("mode", &R::mode).named(hal::kJointNames),
+        field("position", &R::position, "rad").named(hal::kJointNames),
+        field("stiffness", &R::stiffness, "", Range{0, 1}).named(hal::kJointNames),
+        field("torque", &R::torque, "N*m").named(hal::kJointNames));
   }
 };
 

@@ -14,9 +14,10 @@ struct JointSensorData {
   static constexpr std::string_view kTypeName = "JointSensorData";
   static constexpr auto fields() {
     using J = JointSensorData;
-    return std::make_tuple(
-        field("position", &J::position, "rad"), field("current", &J::current, "A"),
-        field("temperature", &J::temperature, "degC"), field("stiffness", &J::stiffness));
+    return std::make_tuple(field("position", &J::position, "rad").named(hal::kJointNames),
+                           field("current", &J::current, "A").named(hal::kJointNames),
+                           field("temperature", &J::temperature, "degC").named(hal::kJointNames),
+                           field("stiffness", &J::stiffness).named(hal::kJointNames));
   }
 };
 

@@ -19,7 +19,7 @@ void check_changes(const ModuleRegistry& registry, const RuntimeConfig& config,
     try {
       apply_change(scratch, c);
     } catch (const Error& e) {
-      throw error_at(c.file, c.line, "<at>: " + std::string(e.what()));
+      throw input_error_at(c.file, c.line, "<at>: " + std::string(e.what()));
     }
   }
 }

@@ -50,7 +50,8 @@ class SensorConversion final : public Module {
         params_(c.parameters<SensorConversionParameters>()),
         joints_(c.provide<JointSensorData>()),
         inertial_(c.provide<InertialSensorData>()),
-        fsr_(c.provide<FsrSensorData>()) {}
+        fsr_(c.provide<FsrSensorData>()),
+        stop_on_fall_(c.debug_request("robot:stop_on_fall")) {}
 
   void update() override {
     joints_.position = sensor_.position;
@@ -61,6 +62,12 @@ class SensorConversion final : public Module {
     inertial_.gyro = Eigen::Vector3d(sensor_.gyroscope.data());
     inertial_.angles = Eigen::Vector2d(sensor_.angles.data());
     fsr_ = fsr_sensor_data(sensor_, params_.contact_force);
+    const double tilt = inertial_.angles.cwiseAbs().maxCoeff();
+    if (stop_on_fall_.on() && tilt > params_.fall_tilt)
+      stop_on_fall_.stop("fell: IMU tilt " + std::to_string(tilt) + " rad (roll " +
+                         std::to_string(inertial_.angles.x()) + ", pitch " +
+                         std::to_string(inertial_.angles.y()) + ") past fall_tilt " +
+                         std::to_string(params_.fall_tilt));
   }
 
  private:
@@ -69,6 +76,7 @@ class SensorConversion final : public Module {
   JointSensorData& joints_;
   InertialSensorData& inertial_;
   FsrSensorData& fsr_;
+  DebugRequest stop_on_fall_;
 };
 
 class ActuatorConversion final : public Module {

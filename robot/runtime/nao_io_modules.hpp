@@ -14,11 +14,13 @@ namespace stride {
 
 struct SensorConversionParameters {
   double contact_force = 2.0;  // a foot is in contact when its FSRs sum to more than this
+  double fall_tilt = 0.8;      // IMU |roll| or |pitch| beyond this is a fall (robot:stop_on_fall)
 
   static constexpr std::string_view kTypeName = "SensorConversionParameters";
   static constexpr auto fields() {
-    return std::make_tuple(
-        field("contact_force", &SensorConversionParameters::contact_force, "N", Range{0, 200}));
+    using P = SensorConversionParameters;
+    return std::make_tuple(field("contact_force", &P::contact_force, "N", Range{0, 200}),
+                           field("fall_tilt", &P::fall_tilt, "rad", Range{0.05, 3.2}));
   }
 };
 

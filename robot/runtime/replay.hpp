@@ -42,8 +42,9 @@ struct ReplayResult {
 
 // Runs a fresh Runtime over the log up to its first damaged frame and compares every logged
 // representation except ModuleTimes (wall-clock measurements) with what the replay produced, byte
-// for byte. The configuration must be the one the log was recorded with (no provider swaps during
-// the log).
+// for byte. `config` should be the one the log was recorded with: recorded_config(log.metadata(),
+// ...) gives it (recorded_config.hpp). Provider swaps and parameter changes during the recording
+// are not in it.
 ReplayResult replay_and_compare(const LogReader& log, const ModuleRegistry& registry,
                                 const RuntimeConfig& config);
 

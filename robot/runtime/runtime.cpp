@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
+
+#include "robot/runtime/recorded_config.hpp"
 
 namespace stride {
 
@@ -50,7 +53,7 @@ class Runtime::Context final : public ModuleContext {
       : rt_(rt), name_(name), entry_(entry) {}
 
   DebugRequest debug_request(std::string_view name) override {
-    return {&rt_.debug_bits_, rt_.debug_request_index(name)};
+    return {&rt_.debug_, rt_.debug_request_index(name)};
   }
   const std::string& module_name() const override { return name_; }
   const model::RobotModel& robot_model() override {
@@ -154,13 +157,14 @@ const Slot& Runtime::representation_slot(const std::string& name) const {
 }
 
 int Runtime::debug_request_index(std::string_view name) {
-  auto it = std::find(debug_names_.begin(), debug_names_.end(), name);
-  if (it != debug_names_.end()) return static_cast<int>(it - debug_names_.begin());
-  if (debug_names_.size() >= kMaxDebugRequests)
+  auto& names = debug_.names;
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  if (names.size() >= kMaxDebugRequests)
     throw Error("debug request '" + std::string(name) + "': more than " +
                 std::to_string(kMaxDebugRequests) + " debug requests");
-  debug_names_.emplace_back(name);
-  return static_cast<int>(debug_names_.size()) - 1;
+  names.emplace_back(name);
+  return static_cast<int>(names.size()) - 1;
 }
 
 void Runtime::replan(const std::map<std::string, std::string>& chosen) {
@@ -198,6 +202,7 @@ bool Runtime::step() {
   frame_info_->frame = frame_counter_++;
   frame_info_->period = link_.period();
   if (frame_info_->frame == 0) guard_.hold_measured(*sensor_);
+  if (!overrides_.empty()) apply_overrides_of(kBuiltIn);
   if (run_modules()) {
     command_ = *actuator_;
     guard_.apply(command_, *safety_);
@@ -232,6 +237,7 @@ bool Runtime::run_modules() {
         return false;
       }
     }
+    if (!overrides_.empty()) apply_overrides_of(modules_[i]->owns);
     const auto after = Clock::now();
     times_->ns[i] = std::chrono::duration_cast<std::chrono::nanoseconds>(after - before).count();
     before = after;
@@ -297,7 +303,34 @@ void Runtime::set(std::string_view key, std::string_view text) {
   if (!k.representation) return set_parameters(k.name, update);
   auto it = by_name_.find(k.name);
   if (it == by_name_.end()) throw Error("no representation '" + k.name + "' on the blackboard");
-  it->second->update(update, k.name, Numbers::Finite);
+  if (text == "unchanged") {
+    if (!k.path.empty())
+      throw Error("'unchanged' releases a whole representation: set representation:" + k.name +
+                  " unchanged");
+    if (!overrides_.erase(k.name)) throw Error("representation '" + k.name + "' is not overridden");
+    return;
+  }
+  it->second->update(update, k.name, Numbers::Finite);  // all or nothing: a bad text holds nothing
+  auto& held = overrides_[k.name];
+  held += (held.empty() ? "" : " ") + update;
+}
+
+void Runtime::apply_override(const std::string& representation, const std::string& text) {
+  try {
+    by_name_.at(representation)->update(text, representation);
+  } catch (const Error& e) {
+    // A list field can shrink under an index the override names: release it and say so.
+    debug_.lines.push_back("override of " + representation + " released: " + e.what());
+    overrides_.erase(representation);
+  }
+}
+
+void Runtime::apply_overrides_of(const std::set<std::string>& representations) {
+  for (auto it = overrides_.begin(); it != overrides_.end();) {
+    const auto next = std::next(it);
+    if (representations.count(it->first)) apply_override(it->first, it->second);
+    it = next;
+  }
 }
 
 const TypeDesc& Runtime::type_of(std::string_view key) const {
@@ -326,23 +359,54 @@ std::vector<std::string> Runtime::parameter_modules() const {
   return out;
 }
 
-std::vector<std::pair<std::string, bool>> Runtime::debug_requests() const {
-  std::vector<std::pair<std::string, bool>> out;
-  for (std::size_t i = 0; i < debug_names_.size(); ++i)
-    out.emplace_back(debug_names_[i], debug_bits_.test(i));
+std::vector<std::pair<std::string, DebugSwitch>> Runtime::debug_requests() const {
+  std::vector<std::pair<std::string, DebugSwitch>> out;
+  for (std::size_t i = 0; i < debug_.names.size(); ++i)
+    out.emplace_back(debug_.names[i], !debug_.bits.test(i)   ? DebugSwitch::Off
+                                      : debug_.quiet.test(i) ? DebugSwitch::Quiet
+                                                             : DebugSwitch::On);
   return out;
 }
 
-void Runtime::set_debug_request(const std::string& name, bool on) {
-  auto it = std::find(debug_names_.begin(), debug_names_.end(), name);
-  if (it == debug_names_.end()) throw Error("no debug request '" + name + "'");
-  debug_bits_.set(it - debug_names_.begin(), on);
+void Runtime::set_debug_request(const std::string& name, DebugSwitch state) {
+  const auto& names = debug_.names;
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw Error("no debug request '" + name + "' (dr ? lists them)");
+  const auto i = static_cast<std::size_t>(it - names.begin());
+  debug_.bits.set(i, state != DebugSwitch::Off);
+  debug_.quiet.set(i, state == DebugSwitch::Quiet);
+}
+
+std::vector<std::string> Runtime::take_debug_lines() {
+  std::vector<std::string> lines = std::move(debug_.lines);
+  debug_.lines.clear();
+  if (debug_.dropped_lines > 0)
+    lines.push_back("(" + std::to_string(debug_.dropped_lines) + " debug lines dropped)");
+  debug_.dropped_lines = 0;
+  return lines;
+}
+
+std::string Runtime::take_debug_stop() {
+  return std::exchange(debug_.stop, std::string());
+}
+
+RuntimeConfig Runtime::running_config() const {
+  RuntimeConfig c = config_;
+  c.providers = plan_.provider;
+  c.parameters.clear();
+  for (const auto& [module, slot] : parameters_)
+    for (const FieldDesc& f : slot->desc().fields)
+      c.parameters[module + "." + f.name] = slot->text_at(f.name, module);
+  return c;
 }
 
 void Runtime::start_log(const std::string& path, const LogMetadata& metadata) {
   std::vector<std::pair<std::string, const Slot*>> slots;
   for (const auto& s : slots_) slots.emplace_back(s->desc().name, s.get());
-  log_ = std::make_unique<LogWriter>(path, std::move(slots), metadata);
+  // The log says what it ran with, so a replay after `mr` or `set module:` builds the same.
+  LogMetadata all = config_metadata(running_config());
+  for (const auto& [key, value] : metadata) all[key] = value;
+  log_ = std::make_unique<LogWriter>(path, std::move(slots), all);
 }
 
 void Runtime::stop_log() {

@@ -61,17 +61,30 @@ class Runtime {
 
   // Console keys: "representation:<Name>[.path]" and "module:<Name>[.path]" (parameters).
   std::string get(std::string_view key) const;
+  // A module's parameters change once. A representation's fields are set now and held: re-applied
+  // every frame right after its provider (or the runtime, for built-ins) writes it, until
+  // set(key, "unchanged") releases the representation (SimRobot's convention).
   void set(std::string_view key, std::string_view text);
+  // Held representation overrides: name -> the field assignments, in the order they were set.
+  const std::map<std::string, std::string, std::less<>>& overrides() const { return overrides_; }
   const TypeDesc& type_of(std::string_view key) const;
   std::vector<std::string> representation_names() const;  // blackboard order
   std::vector<std::string> parameter_modules() const;
 
   // Debug requests: named switches modules register and test with DebugRequest::on().
-  std::vector<std::pair<std::string, bool>> debug_requests() const;
-  void set_debug_request(const std::string& name, bool on);
+  std::vector<std::pair<std::string, DebugSwitch>> debug_requests() const;
+  void set_debug_request(const std::string& name, DebugSwitch state);
+  // What the debug requests emitted: lines since the last call (and how many were dropped), the
+  // latest plotted values ("request.value"), the first stop reason since the last call ("" none).
+  std::vector<std::string> take_debug_lines();
+  const std::map<std::string, double, std::less<>>& debug_values() const { return debug_.values; }
+  std::string take_debug_stop();
 
-  // Logs every representation on the blackboard every frame (see log.hpp).
-  // `metadata` goes into the log's header (e.g. the providers, the robot's name).
+  // What runs now: every representation's provider and every parameter's value, as text.
+  RuntimeConfig running_config() const;
+
+  // Logs every representation on the blackboard every frame (see log.hpp), with running_config()
+  // (recorded_config.hpp) and `metadata` (e.g. the robot's name) in the log's header.
   void start_log(const std::string& path, const LogMetadata& metadata = {});
   void stop_log();
   bool logging() const { return log_ != nullptr; }
@@ -95,6 +108,8 @@ class Runtime {
   const Slot& typed_slot(std::string_view name, std::type_index type) const;
   Slot& parameter_slot(const std::string& module);
   int debug_request_index(std::string_view name);
+  void apply_override(const std::string& representation, const std::string& text);
+  void apply_overrides_of(const std::set<std::string>& representations);
   void replan(const std::map<std::string, std::string>& chosen);
   bool run_modules();  // false: a module threw and the policy holds
   void record_fault(const std::string& module, const char* what);
@@ -112,8 +127,8 @@ class Runtime {
   std::vector<std::unique_ptr<ModuleEntry>> modules_;
   std::vector<std::string> order_;
 
-  std::vector<std::string> debug_names_;
-  DebugRequestBits debug_bits_;
+  DebugChannel debug_;
+  std::map<std::string, std::string, std::less<>> overrides_;  // representation -> assignments
 
   hal::SensorFrame* sensor_ = nullptr;
   FrameInfo* frame_info_ = nullptr;

@@ -501,10 +501,16 @@ SceneDescription parse_scene_file(const std::string& given, const PhysicsAttribu
   const std::string path = find_input(given);  // a shipped scene from any working directory
   SceneDescription s;
   s.file = path;
-  Parser p(s, physics_over);
-  p.parse_file(path, nullptr);
-  p.physics_over_defaults();
-  check_references(s);
+  try {
+    Parser p(s, physics_over);
+    p.parse_file(path, nullptr);
+    p.physics_over_defaults();
+    check_references(s);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError(e.what());
+  }
   return s;
 }
 

@@ -8,6 +8,7 @@
 
 namespace stride::sim {
 
+// A relative path not found from the working directory is looked up in the data directory.
 SceneDescription parse_scene_file(const std::string& path);
 
 // <physics> attributes set over a scene's own, e.g. {{"iterations", "40"}, {"sor", "1.0"}}: one

@@ -11,6 +11,7 @@ stride="$prefix/bin/stride"
 [ -x "$stride" ] || { echo "FAIL: no $stride"; exit 1; }
 [ -f "$prefix/share/stride/scenes/robots/nao/nao.urdf" ] || { echo "FAIL: no robot installed"; exit 1; }
 mkdir elsewhere && cd elsewhere || exit 1
+expect_run 0 "data directory: $prefix/share/stride " "$stride" help
 expect_run 0 'upright' "$stride" run scenes/nao_stand.xml --seconds 0.1
 # A scene only the prefix has: the installed stride reads the prefix, not the checkout.
 cp "$prefix/share/stride/scenes/nao_stand.xml" "$prefix/share/stride/scenes/prefix_only.xml"
@@ -19,11 +20,11 @@ expect_run 0 'ok representation:ComState.valid = true' "$stride" -c "mr JointReq
   run 0.5; expect representation:ComState.valid == true" scenes/nao_stand_controlled.xml
 expect_run 0 'total mass' "$stride" kin com --q "LHipPitch=-0.3"
 # A --scenes directory that is neither here nor shipped is named as given.
-expect_run 1 "scenes/no_such_dir' not found" "$stride" \
+expect_run 3 "scenes/no_such_dir' not found" "$stride" \
   experiment posture --seeds 1 --scenes scenes/no_such_dir
-# STRIDE_DATA overrides the prefix: pointing at the checkout works, at a directory without
-# scenes/ the shipped scene is not found any more.
+# STRIDE_DATA overrides the prefix: pointing at the checkout works; one without scenes/ is named.
+expect_run 0 "data directory: $src " env STRIDE_DATA="$src" "$stride" help
 expect_run 0 'upright' env STRIDE_DATA="$src" "$stride" run scenes/nao_stand.xml --seconds 0.1
-expect_run 1 'scenes/nao_stand\.xml' env STRIDE_DATA="$work" "$stride" run scenes/nao_stand.xml \
-  --seconds 0.1
+expect_run 3 "STRIDE_DATA='$work' has no scenes/" env STRIDE_DATA="$work" "$stride" kin com \
+  --q "LHipPitch=0"
 finish

@@ -113,7 +113,8 @@ TEST(Parser, WrongArityNamesTheUsage) {
   EXPECT_EQ(error_of("mv 1"),
             "mv: expected 3 to 4 argument(s), got 1; usage: mv <x> <y> <z> [yaw]");
   EXPECT_EQ(error_of("set module:Stand"),
-            "set: expected at least 2 argument(s), got 1; usage: set <key> <field>=<value>...");
+            "set: expected at least 2 argument(s), got 1; usage: set <key> <field>=<value>... | "
+            "set representation:X unchanged");
 }
 
 TEST(Parser, BadArgumentsAreNamed) {

@@ -153,7 +153,8 @@ TEST(EnsembleCommand, RunPrintsEveryMemberAndTheSpread) {
   EXPECT_NE(text.find("lost"), std::string::npos);
   EXPECT_NE(text.find("0/2"), std::string::npos);  // two standing NAOs: none fell
   std::ostringstream bad_out, bad_err;
-  EXPECT_EQ(run({kStand, "--ensemble", "2", "--report", "r.json"}, bad_out, bad_err), 1);
+  EXPECT_EQ(run({kStand, "--ensemble", "2", "--report", "r.json"}, bad_out, bad_err),
+            2);  // a wrong command line
   EXPECT_EQ(bad_err.str(), "stride run: --report: not with --ensemble (one run only)\n");
 }
 

@@ -55,17 +55,17 @@ int run(std::vector<std::string> args, std::string& err_text) {
 
 TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   std::string err;
-  EXPECT_EQ(run({"walkabout"}, err), 1);
+  EXPECT_EQ(run({"walkabout"}, err), 2);  // a wrong command line (README "Exit codes")
   EXPECT_NE(err.find("unknown experiment 'walkabout'"), std::string::npos) << err;
-  EXPECT_EQ(run({"posture", "--seeds", "0"}, err), 1);
+  EXPECT_EQ(run({"posture", "--seeds", "0"}, err), 2);
   EXPECT_NE(err.find("--seeds"), std::string::npos) << err;
-  EXPECT_EQ(run({"posture", "--jobs", "0"}, err), 1);
+  EXPECT_EQ(run({"posture", "--jobs", "0"}, err), 2);
   EXPECT_NE(err.find("--jobs: expected 1..256"), std::string::npos) << err;
-  EXPECT_EQ(run({"posture", "--physics", "solver=fast"}, err), 1);
+  EXPECT_EQ(run({"posture", "--physics", "solver=fast"}, err), 2);
   EXPECT_NE(err.find("--physics: physics setting 'solver=fast'"), std::string::npos) << err;
-  EXPECT_EQ(run({"kalman", "--physics", "solver=exact"}, err), 1);
+  EXPECT_EQ(run({"kalman", "--physics", "solver=exact"}, err), 2);
   EXPECT_NE(err.find("only the sweep studies take it"), std::string::npos) << err;
-  EXPECT_EQ(run({"posture", "--scenes", "/nonexistent"}, err), 1);
+  EXPECT_EQ(run({"posture", "--scenes", "/nonexistent"}, err), 3);  // an input not there
   EXPECT_NE(err.find("not found"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
 }
@@ -86,16 +86,16 @@ TEST(PostureCases, SelectionNamesScenesOrStrategies) {
 
 TEST(ExperimentCommand, CasesIsCheckedBeforeAnyWalk) {
   std::string err;
-  EXPECT_EQ(run({"posture", "--cases", "hip,sprint"}, err), 1);
+  EXPECT_EQ(run({"posture", "--cases", "hip,sprint"}, err), 2);
   EXPECT_NE(err.find("--cases: unknown case 'sprint'"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
-  EXPECT_EQ(run({"kalman", "--cases", "hip"}, err), 1);
+  EXPECT_EQ(run({"kalman", "--cases", "hip"}, err), 2);
   EXPECT_NE(err.find("only posture takes it"), std::string::npos) << err;
-  EXPECT_EQ(run({"posture", "--cases", ","}, err), 1);
+  EXPECT_EQ(run({"posture", "--cases", ","}, err), 2);
   EXPECT_NE(err.find("--cases: expected"), std::string::npos) << err;
   // Only the chosen cases' scenes must exist: a directory with none of them names hip_slow.
   const std::string no_cases = std::string(STRIDE_SOURCE_DIR) + "/scenes";
-  EXPECT_EQ(run({"posture", "--cases", "hip", "--scenes", no_cases}, err), 1);
+  EXPECT_EQ(run({"posture", "--cases", "hip", "--scenes", no_cases}, err), 3);
   EXPECT_NE(err.find(no_cases + "/hip_slow.xml"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
 }

@@ -151,17 +151,19 @@ TEST(Runtime, DebugRequestsAreListedAndToggled) {
   const auto registry = test::test_registry();
   FakeLink link;
   Runtime rt(registry, test::test_config(), link);
-  const auto list = rt.debug_requests();
-  ASSERT_EQ(list.size(), 1u);
-  EXPECT_EQ(list[0], std::make_pair(std::string("test:negate"), false));
+  using Listed = std::vector<std::pair<std::string, DebugSwitch>>;
+  // In the order the modules registered them (the registry's, by name).
+  EXPECT_EQ(rt.debug_requests(),
+            (Listed{{"test:negate", DebugSwitch::Off}, {"robot:stop_on_fall", DebugSwitch::Off}}));
   rt.step();
   rt.step();
   EXPECT_EQ(rt.representation<test::Doubled>().n, 2);
-  rt.set_debug_request("test:negate", true);
+  rt.set_debug_request("test:negate", DebugSwitch::On);
   rt.step();
   EXPECT_EQ(rt.representation<test::Doubled>().n, -4);
-  EXPECT_TRUE(rt.debug_requests()[0].second);
-  EXPECT_EQ(error_of([&] { rt.set_debug_request("nope", true); }), "no debug request 'nope'");
+  EXPECT_EQ(rt.debug_requests()[0].second, DebugSwitch::On);
+  EXPECT_EQ(error_of([&] { rt.set_debug_request("nope", DebugSwitch::On); }),
+            "no debug request 'nope' (dr ? lists them)");
 }
 
 TEST(Runtime, LostLinkRunsNothing) {

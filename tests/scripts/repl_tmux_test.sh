@@ -1,6 +1,7 @@
 #!/bin/bash
 # Types into the real `stride` REPL inside tmux and reads the screen back: tab completion of
-# commands, keys and fields; an error that does not end the session; history across runs.
+# commands, keys and fields; an error that does not end the session; history across runs; a
+# background `run` during which get, set, mr, realtime and pause are answered, and Ctrl-C pauses.
 # usage: repl_tmux_test.sh <stride binary> <source dir>. Exit 77 (skipped) without tmux.
 set -u
 stride=$1 src=$2
@@ -58,4 +59,69 @@ wait_for 'stride> echo history-marker-42'
 tm send-keys -t t Enter
 wait_for '^history-marker-42$'
 tm send-keys -t t 'quit' Enter
-echo "ok: completion, errors and history in the terminal REPL"
+tm kill-server >/dev/null 2>&1
+sock="${sock}_third"
+
+# The value printed after `echo <marker>`: the first line below the marker that is a number.
+value_after() {
+  tm capture-pane -p -S - -t t | awk -v m="$1" '$0 == m {f = 1; next} f && /^-?[0-9.e+-]+$/ {print; exit}'
+}
+# Prints `get <key>` after a marker line and returns the value.
+get_value() {
+  marker="v-$RANDOM-$RANDOM"
+  tm send-keys -t t "echo $marker" Enter "get $1" Enter
+  for _ in $(seq 1 100); do
+    v=$(value_after "$marker")
+    [ -n "$v" ] && { echo "$v"; return 0; }
+    sleep 0.1
+  done
+  fail "no value for $1"
+}
+more() { awk -v a="$1" -v b="$2" 'BEGIN {exit !(b > a)}'; }
+
+# A background run: the prompt answers while the simulation advances between the commands.
+start
+tm send-keys -t t 'run' Enter
+wait_for '^running from t=0 '
+t1=$(get_value sim.time)
+sleep 0.5
+t2=$(get_value sim.time)
+more "$t1" "$t2" || fail "sim.time did not advance while running ($t1, $t2)"
+f1=$(get_value representation:FrameInfo.frame)
+# set, mr and realtime apply between frames while it runs.
+tm send-keys -t t 'set representation:JointRequest position[HeadYaw]=0.4' Enter
+tm send-keys -t t 'mr JointRequest Stand' Enter
+wait_for '^JointRequest <- Stand$'
+v=$(get_value 'representation:JointRequest.position[HeadYaw]')
+[ "$v" = "0.4" ] || fail "the held override reads $v"
+tm send-keys -t t 'realtime on' Enter
+r1=$(get_value sim.time)
+sleep 1
+r2=$(get_value sim.time)
+awk -v a="$r1" -v b="$r2" 'BEGIN {exit !(b > a && b - a < 1.6)}' ||
+  fail "realtime: $r1 -> $r2 in 1 s of wall time"
+tm send-keys -t t 'realtime off' Enter
+tm send-keys -t t 'pause' Enter
+wait_for '^paused at t='
+p1=$(get_value sim.time)
+sleep 0.5
+p2=$(get_value sim.time)
+[ "$p1" = "$p2" ] || fail "sim.time moved after pause ($p1, $p2)"
+more "$t2" "$p1" || fail "paused before it ran ($t2, $p1)"
+f2=$(get_value representation:FrameInfo.frame)
+more "$f1" "$f2" || fail "no control frames ran ($f1, $f2)"
+# Ctrl-C pauses a background run; at the idle prompt it only drops the typed line.
+tm send-keys -t t 'run' Enter
+wait_for 'running from t='"$p1"
+sleep 0.3
+tm send-keys -t t C-c
+for _ in $(seq 1 100); do
+  [ "$(tm capture-pane -p -S - -t t | grep -c '^paused at t=')" -ge 2 ] && break
+  sleep 0.1
+done
+[ "$(tm capture-pane -p -S - -t t | grep -c '^paused at t=')" -ge 2 ] || fail "Ctrl-C did not pause"
+tm send-keys -t t 'half typed' C-c
+tm send-keys -t t 'echo still-here' Enter
+wait_for '^still-here$'
+tm send-keys -t t 'quit' Enter
+echo "ok: completion, errors, history and a background run in the terminal REPL"

@@ -133,6 +133,7 @@ class ComStateEstimator final : public Module {
         params_(c.parameters<ComStateEstimatorParameters>()),
         state_(c.provide<ComState>()),
         model_out_(c.provide<BalanceModel>()),
+        debug_(c.debug_request("balance:kalman")),
         com_(c.robot_model()) {}
 
   void update() override {
@@ -183,6 +184,14 @@ class ComStateEstimator final : public Module {
     state_.y = estimate_.x(3);
     state_.ydot = estimate_.x(4);
     state_.zmp_y = estimate_.x(5);
+    debug_.show({{"measured_com_x", com.x()},
+                 {"com_x", state_.x},
+                 {"measured_cop_x", cop.x()},
+                 {"zmp_x", state_.zmp_x},
+                 {"measured_com_y", com.y()},
+                 {"com_y", state_.y},
+                 {"measured_cop_y", cop.y()},
+                 {"zmp_y", state_.zmp_y}});
   }
 
  private:
@@ -193,6 +202,7 @@ class ComStateEstimator final : public Module {
   const ComStateEstimatorParameters& params_;
   ComState& state_;
   BalanceModel& model_out_;
+  DebugRequest debug_;  // measured CoM and CoP beside the filter's CoM and ZMP (Eqs. 7.1-7.4)
   KinematicCom com_;
   bool stand_measured_ = false;
   balance::ComEstimate estimate_;

@@ -8,6 +8,7 @@
 #include "behaviours/stand/stand.hpp"
 #include "behaviours/walking/modules/walk_parameters.hpp"
 #include "robot/representations/frame_info.hpp"
+#include "robot/representations/fsr_sensor_data.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
 
 namespace stride::behaviours {
@@ -44,8 +45,10 @@ class PatternPlayer final : public Module {
   explicit PatternPlayer(ModuleContext& c)
       : frame_(c.require<FrameInfo>()),
         joints_(c.require<JointSensorData>()),
+        fsr_(c.require<FsrSensorData>()),
         params_(c.parameters<WalkParameters>()),
-        request_(c.provide<WalkingJointRequest>()) {}
+        request_(c.provide<WalkingJointRequest>()),
+        zmp_debug_(c.debug_request("walking:zmp")) {}
 
   void update() override {
     if (!pattern_ || !same_walk_parameters(params_, built_from_)) {
@@ -58,9 +61,11 @@ class PatternPlayer final : public Module {
     }
     const double t = pattern_time(frame_.time, *first_time_, params_.start_delay);
     const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
-    request_ = walking_request(walking::leg_joints(pattern_->sample(t_clamped)));
+    const walking::PatternSample sample = pattern_->sample(t_clamped);
+    request_ = walking_request(walking::leg_joints(sample));
     if (request_.ik_beyond_limits != 0) ++beyond_limit_frames_;
     request_.ik_beyond_limit_frames = beyond_limit_frames_;
+    show_zmp(sample);
     const double elapsed = frame_.time - *first_time_;
     if (t >= 0 || elapsed >= params_.interpolation_time) return;
     // Standing up: a cosine blend (zero velocity at both ends) from the measured pose.
@@ -71,10 +76,24 @@ class PatternPlayer final : public Module {
   }
 
  private:
+  // The planned ZMP (Eq. 3.16) beside the measured CoP, both in the pattern's world frame; the
+  // CoP is placed from the planned waist (an upright torso), so the gap also shows the lean.
+  void show_zmp(const walking::PatternSample& s) const {
+    if (!zmp_debug_.on() || !fsr_.cop_torso_valid) return;
+    const Eigen::Vector2d cop = s.waist.head<2>() + fsr_.cop_torso.head<2>();
+    zmp_debug_.show({{"zmp_x", s.zmp.x()},
+                     {"zmp_y", s.zmp.y()},
+                     {"cop_x", cop.x()},
+                     {"cop_y", cop.y()},
+                     {"error", (cop - s.zmp).norm()}});
+  }
+
   const FrameInfo& frame_;
   const JointSensorData& joints_;
+  const FsrSensorData& fsr_;
   const WalkParameters& params_;
   WalkingJointRequest& request_;
+  DebugRequest zmp_debug_;
   std::optional<Pattern> pattern_;
   WalkParameters built_from_;
   std::optional<double> first_time_;

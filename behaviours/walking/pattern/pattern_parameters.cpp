@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "behaviours/walking/pattern/pattern_parameter_list.hpp"
 #include "robot/core/error.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 
@@ -13,9 +14,7 @@ namespace stride::walking {
 namespace {
 
 std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+  return parameter_text(v);
 }
 
 bool finite_positive(double v) {
@@ -238,15 +237,9 @@ void set_parameter(PatternParameters& p, const std::string& name, const std::str
 }
 
 std::vector<std::string> parameter_names() {
-  return {"T_stride",      "tau_dsp",
-          "A_l",           "A_s",
-          "z_min",         "z_max",
-          "d_0",           "H_foot",
-          "V_min",         "V_max",
-          "steps",         "development_steps",
-          "decay_steps",   "development_levels",
-          "decay_levels",  "gravity",
-          "z_conventional"};
+  std::vector<std::string> names;
+  for (const auto& i : parameter_info()) names.emplace_back(i.name);
+  return names;
 }
 
 }  // namespace stride::walking
