@@ -21,7 +21,13 @@ SimSession::SimSession(const std::string& scene_path, std::optional<std::uint64_
 
 SimSession::SimSession(sim::SceneDescription scene) {
   behaviours::register_all_modules(registry_);
-  sim_ = std::make_unique<sim::Simulation>(std::move(scene));
+  try {
+    sim_ = std::make_unique<sim::Simulation>(std::move(scene));
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {  // what the scene builds (URDF, devices, limits) is the input's fault
+    throw InputError(e.what());
+  }
   attach_controllers();
 }
 

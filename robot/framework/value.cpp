@@ -119,7 +119,9 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
   Target t{&d, &v, std::nullopt};
   std::string where(root);
   std::size_t i = 0;
-  auto fail = [&](const std::string& what) -> Error { return Error(where + ": " + what); };
+  auto fail = [&](const std::string& what) -> InputError {
+    return InputError(where + ": " + what);
+  };
   while (i < path.size()) {
     if (path[i] == '[') {
       const auto close = path.find(']', i);
@@ -223,11 +225,11 @@ class Parser {
     return "'" + std::string(w.substr(0, w.find_first_of(" \t\n"))) + "'";
   }
   [[noreturn]] void fail(const std::string& where, const std::string& expected) {
-    throw Error(where + ": expected " + expected + ", got " + next_token());
+    throw InputError(where + ": expected " + expected + ", got " + next_token());
   }
   [[noreturn]] void fail_at(const std::string& where, std::string_view token,
                             const std::string& expected) {
-    throw Error(where + ": expected " + expected + ", got '" + std::string(token) + "'");
+    throw InputError(where + ": expected " + expected + ", got '" + std::string(token) + "'");
   }
 
   void parse(const TypeDesc& d, Value& v, const std::string& where,
@@ -258,8 +260,9 @@ class Parser {
   void check_range(const std::string& where, double x, std::string_view token,
                    const std::optional<Range>& range) {
     if (range && !(x >= range->min && x <= range->max))
-      throw Error(where + ": " + std::string(token) + " is outside [" +
-                  number_text(range->min, false) + ", " + number_text(range->max, false) + "]");
+      throw InputError(where + ": " + std::string(token) + " is outside [" +
+                       number_text(range->min, false) + ", " + number_text(range->max, false) +
+                       "]");
   }
   std::string_view s_;
   std::string root_;
@@ -338,8 +341,8 @@ void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
         parse(*d.element, items[n], where + "[" + std::to_string(n) + "]", range);
       }
       if (d.kind == Kind::Array && n != d.length)
-        throw Error(where + ": expected " + std::to_string(d.length) + " elements, got " +
-                    std::to_string(n));
+        throw InputError(where + ": expected " + std::to_string(d.length) + " elements, got " +
+                         std::to_string(n));
       items.resize(n);
       return;
     }
@@ -490,7 +493,7 @@ void update_value(const TypeDesc& d, Value& v, std::string_view text, std::strin
   Value copy = v;
   Parser p(text, root_name, numbers);
   const std::string root(root_name);
-  if (p.at_end()) throw Error(root + ": expected field=value or a whole value, got nothing");
+  if (p.at_end()) throw InputError(root + ": expected field=value or a whole value, got nothing");
   if (d.kind != Kind::Struct || p.peek('{')) {
     p.parse(d, copy, root, std::nullopt);
     if (!p.at_end()) p.fail(root, "end of text after the value");

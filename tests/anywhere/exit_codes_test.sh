@@ -22,9 +22,9 @@ expect_run 2 'stride swing-leg: missing <study>' "$stride" swing-leg
 expect_run 2 'stride dyn: expected params' "$stride" dyn
 # 3: an input cannot be read or parsed
 expect_run 3 'no_such\.xml' "$stride" run no_such.xml
-expect_run 3 "cannot read script 'no_such\.con'" "$stride" --script no_such.con
+expect_run 3 "script 'no_such\.con': cannot open" "$stride" --script no_such.con
 expect_run 3 "unknown command 'bogus'" "$stride" -c "bogus" "$scene"
-expect_run 3 'no_such\.urdf: cannot open URDF file' "$stride" kin com --q "LHipPitch=0" \
+expect_run 3 "URDF file 'no_such\.urdf': cannot open" "$stride" kin com --q "LHipPitch=0" \
   --urdf no_such.urdf
 expect_run 3 'no_such\.xml' "$stride" landing --scene no_such.xml
 printf 'load %s\nrun 0.1\nbogus 1\n' "$src/$scene" >typo.con

@@ -80,25 +80,5 @@ TEST(RecordedConfig, ALogWithoutMetadataOpensAndReplaysWithTheGivenConfig) {
                        "providers: not recorded (a log written before logs carried them)"));
 }
 
-TEST(RecordedConfig, AHostileMetadataCountFailsCleanly) {
-  const std::string path = temp_path("stride_bad_metadata.log");
-  {
-    std::ofstream out(path, std::ios::binary);
-    const std::uint32_t header_size = 8, types = 0, count = 1u << 30;
-    out << "STRDLOG1";
-    out.write(reinterpret_cast<const char*>(&header_size), 4);
-    out.write(reinterpret_cast<const char*>(&types), 4);
-    out.write(reinterpret_cast<const char*>(&count), 4);
-  }
-  try {
-    LogReader log(path);
-    FAIL() << "opened";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("bad header: metadata count 1073741824 too large"),
-              std::string::npos)
-        << e.what();
-  }
-}
-
 }  // namespace
 }  // namespace stride

@@ -41,12 +41,13 @@ class BudgetTarget final : public console::Target {
   void swap_provider(const std::string& r, const std::string& m) override {
     inner_.swap_provider(r, m);
   }
-  std::vector<std::pair<std::string, bool>> debug_requests() override {
+  std::vector<std::pair<std::string, DebugSwitch>> debug_requests() override {
     return inner_.debug_requests();
   }
-  void set_debug_request(const std::string& n, bool on) override {
-    inner_.set_debug_request(n, on);
+  void set_debug_request(const std::string& n, DebugSwitch state) override {
+    inner_.set_debug_request(n, state);
   }
+  console::DebugOutput take_debug_output() override { return inner_.take_debug_output(); }
   void log_start(const std::string& p) override { inner_.log_start(scratch(p)); }
   void log_stop() override { inner_.log_stop(); }
   std::string log_load(const std::string& p) override { return inner_.log_load(p); }
@@ -55,6 +56,7 @@ class BudgetTarget final : public console::Target {
     inner_.log_export(scratch(p), k);
   }
   console::ReplaySummary log_replay() override { return inner_.log_replay(); }
+  std::vector<std::string> log_info() override { return inner_.log_info(); }
   std::string report_text() override { return inner_.report_text(); }
   std::string report_json() override { return inner_.report_json(); }
   void push(const std::string& b, double fx, double fy, double fz, double s) override {

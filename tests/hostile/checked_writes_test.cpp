@@ -10,12 +10,13 @@ const std::string kStand = source_path("scenes/nao_stand_controlled.xml");
 const char* kFull = "cannot write '/dev/full': No space left on device";
 
 TEST(CheckedWrites, RunOutputsToDevFull) {
-  expect_refused(run_stride({"run", kStand, "--seconds", "0.02", "--report", "/dev/full"}),
-                 {kFull});
-  expect_refused(run_stride({"run", kStand, "--seconds", "0.02", "--log", "/dev/full"}), {kFull});
+  expect_refused(run_stride({"run", kStand, "--seconds", "0.02", "--report", "/dev/full"}), {kFull},
+                 1);
+  expect_refused(run_stride({"run", kStand, "--seconds", "0.02", "--log", "/dev/full"}), {kFull},
+                 1);
   expect_refused(run_stride({"run", kStand, "--seconds", "0.02", "--snapshot", "/dev/full"}),
-                 {kFull});
-  expect_refused(run_stride({"pattern", "--csv", "/dev/full"}), {kFull});
+                 {kFull}, 1);
+  expect_refused(run_stride({"pattern", "--csv", "/dev/full"}), {kFull}, 1);
 }
 
 TEST(CheckedWrites, StandardOutputToDevFull) {
@@ -35,14 +36,15 @@ TEST(CheckedWrites, ConsoleOutputsToDevFull) {
                                "log start " + s.path("b.log") + "; run 0.03; log save /dev/full",
                                std::string("plot sim.time to /dev/full; run 0.02; plot stop")}) {
     const auto r = run_stride({"-c", c, kStand});
-    expect_refused(r, {"cannot write '/dev/full"});
+    expect_refused(r, {"cannot write '/dev/full"}, 1);
   }
 }
 
-// A disk that fills up: the process's file size limit makes every write past 16 KiB fail (EFBIG)
-// as ENOSPC would; SIGXFSZ is ignored so the write returns the error.
+// A disk that fills up: the process's file size limit makes every write past 64 KiB (a log header
+// with its recorded configuration takes ~16 KiB) fail (EFBIG) as ENOSPC would; SIGXFSZ is ignored
+// so the write returns the error.
 console::ChildResult run_with_full_disk(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {"sh", "-c", "trap '' XFSZ; ulimit -f 16; exec \"$@\"", "sh",
+  std::vector<std::string> argv = {"sh", "-c", "trap '' XFSZ; ulimit -f 64; exec \"$@\"", "sh",
                                    stride_binary()};
   argv.insert(argv.end(), args.begin(), args.end());
   return console::run_child(argv, "");
@@ -52,12 +54,12 @@ TEST(CheckedWrites, FullDiskLeavesNoPartialOutput) {
   Scratch s;
   const std::string report = s.path("report.json"), csv = s.path("pattern.csv");
   expect_refused(run_with_full_disk({"pattern", "--csv", csv}),
-                 {"cannot write '" + csv + "': File too large"});
+                 {"cannot write '" + csv + "': File too large"}, 1);
   EXPECT_TRUE(fs::is_empty(s.dir)) << "no file, no temporary";
   // A log keeps every frame written before the disk filled: the rest is refused loudly.
   const std::string log = s.path("run.log");
   const auto r = run_with_full_disk({"run", kStand, "--seconds", "1", "--log", log});
-  expect_refused(r, {"cannot write '" + log + "': File too large"});
+  expect_refused(r, {"cannot write '" + log + "': File too large"}, 1);
   const auto load = run_stride({"-c", "log load " + log, kStand});
   EXPECT_EQ(load.exit_status, 0) << load.err;
   EXPECT_NE(load.out.find(" complete, 0 damaged"), std::string::npos) << load.out;

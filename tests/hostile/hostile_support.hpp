@@ -48,11 +48,12 @@ inline console::ChildResult run_stride(std::vector<std::string> args) {
   return console::run_child(args, "");
 }
 
-// Exit status 1 (not a signal, not 0) with exactly one line on standard error that contains each
-// of `parts`.
-inline void expect_refused(const console::ChildResult& r, const std::vector<std::string>& parts) {
+// Exit status `status` (console/cli/exit_codes.hpp: 3 bad input, 2 usage error, 1 run failure;
+// not a signal) with exactly one line on standard error that contains each of `parts`.
+inline void expect_refused(const console::ChildResult& r, const std::vector<std::string>& parts,
+                           int status = 3) {
   EXPECT_EQ(r.signal, 0) << "killed by signal " << r.signal << "; stderr: " << r.err;
-  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_EQ(r.exit_status, status) << r.err;
   ASSERT_FALSE(r.err.empty());
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   for (const auto& p : parts) EXPECT_NE(r.err.find(p), std::string::npos) << p << " in " << r.err;
