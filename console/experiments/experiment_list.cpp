@@ -92,12 +92,12 @@ std::string experiment_sweep_file(const std::string& name, const std::string& sw
   if (name == "kalman") return "";
   if (std::find(kSweeps.begin(), kSweeps.end(), name) == kSweeps.end())
     throw UsageError("stride experiment: unknown experiment '" + name + "' (expected one of " +
-                experiment_names() + ")");
+                     experiment_names() + ")");
   const std::filesystem::path p =
       std::filesystem::path(find_input(sweeps_dir)) / (name + ".sweep.xml");
   if (!std::filesystem::exists(p))
     throw InputError("experiment sweep file '" + p.string() +
-                "' not found (--sweeps <dir> chooses another)");
+                     "' not found (--sweeps <dir> chooses another)");
   return p.string();
 }
 

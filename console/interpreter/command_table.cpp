@@ -1,7 +1,7 @@
 #include "console/interpreter/command_table.hpp"
 
-#include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/help_search.hpp"
+#include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/physical_limits.hpp"
