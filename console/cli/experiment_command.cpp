@@ -47,10 +47,14 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
       o.parameters.push_back(experiments::parse_parameter_override(set));
     if (a.has("--physics")) {
       if (name == "kalman")
-        throw Error(
+        throw UsageError(
             "stride experiment kalman: --physics: kalman replays one walk's filter; only "
             "the sweep studies take it");
-      o.physics = sweep::physics_settings(a.text("--physics"));
+      try {
+        o.physics = sweep::physics_settings(a.text("--physics"));
+      } catch (const Error& e) {
+        throw UsageError(e.what());  // a malformed value is a wrong command line
+      }
     }
     if (a.has("--cases")) {
       if (name != "posture")

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/sweep/sweep_request.hpp"
 #include "robot/core/data_dir.hpp"
@@ -50,7 +51,15 @@ std::string command_line(const std::string& command, Args args) {
 int sweep_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentReader a(args, "sweep");
-    sweep::SweepRequest r = sweep_request_flags(a, "sweep");
+    sweep::SweepRequest r = [&] {
+      try {
+        return sweep_request_flags(a, "sweep");
+      } catch (const UsageError&) {
+        throw;
+      } catch (const Error& e) {
+        throw UsageError(e.what());  // a malformed --set, --physics or --only
+      }
+    }();
     r.file = find_input(a.positional("sweep file"));  // also a shipped one from anywhere
     a.finish();
     if (r.options.out_dir.empty())
@@ -64,8 +73,7 @@ int sweep_main(Args args, std::ostream& out, std::ostream& err) {
         << " runs failed (listed above, status 'failed' in runs.csv)\n";
     return 1;
   } catch (const Error& e) {
-    err << e.what() << "\n";
-    return 1;
+    return report_error(e, err);
   }
 }
 

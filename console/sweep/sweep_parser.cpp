@@ -237,10 +237,16 @@ SweepSpec parse_sweep_text(const std::string& text, const std::string& virtual_p
 
 SweepSpec parse_sweep_file(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw Error(path + ":0: cannot open sweep file");
+  if (!in) throw InputError(path + ":0: cannot open sweep file");
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_sweep_text(ss.str(), path);
+  try {
+    return parse_sweep_text(ss.str(), path);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& e) {
+    throw InputError(e.what());  // a file given to stride that does not parse (exit code 3)
+  }
 }
 
 }  // namespace stride::sweep

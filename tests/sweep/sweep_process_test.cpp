@@ -129,7 +129,7 @@ TEST_F(SweepProcess, BadSweepFileIsOneLineAndRunsNothing) {
   std::ofstream(dir / "bad.xml")
       << "<sweep>\n<scene file=\"x.xml\"/>\n<run secnds=\"1\"/>\n</sweep>\n";
   EXPECT_EQ(
-      run({kStride, "sweep", (dir / "bad.xml").string(), "--out", (dir / "out").string()}, dir), 1);
+      run({kStride, "sweep", (dir / "bad.xml").string(), "--out", (dir / "out").string()}, dir), 3);
   EXPECT_EQ(read(dir.string() + ".err"),
             (dir / "bad.xml").string() +
                 ":3: <run>: unknown attribute 'secnds' (expected seconds, until)\n");
