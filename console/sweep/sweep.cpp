@@ -20,6 +20,15 @@ Error at(const SweepSpec& s, int line, const std::string& what) {
   return error_at(s.file, line, what);
 }
 
+// The same for an error a run's scene or session raised: its kind (bad input, usage) is kept so
+// the command exits with that kind's code.
+[[noreturn]] void rethrow_at(const SweepSpec& s, const std::string& prefix, const Error& e) {
+  const Error plain = at(s, 0, prefix + e.what());
+  if (dynamic_cast<const InputError*>(&e)) throw InputError(plain.what());
+  if (dynamic_cast<const UsageError*>(&e)) throw UsageError(plain.what());
+  throw plain;
+}
+
 void check_time(const SweepSpec& s, const TimePoint& p, int line) {
   static const std::set<std::string> marks = {"start", "end", "walk_start", "walk_end"};
   if (!marks.count(p.mark))
@@ -179,7 +188,7 @@ void check_scenes(const Sweep& sweep, const Sweep::Compiled& c,
       if (c.walk_frame) walk.emplace(*session);
       FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys);
     } catch (const Error& e) {
-      throw at(s, 0, "run " + std::to_string(run.id) + ": " + e.what());
+      rethrow_at(s, "run " + std::to_string(run.id) + ": ", e);
     }
   }
 }
