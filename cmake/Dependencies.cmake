@@ -13,10 +13,20 @@ endif()
 # The simulator, console, tests and benchmarks:
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+# Optional: MP4 movies (Debian libavcodec-dev, libavformat-dev, libswscale-dev, libavutil-dev);
+# without them movies are written as animated PNG only.
+pkg_check_modules(FFMPEG IMPORTED_TARGET libavcodec libavformat libswscale libavutil)
+if(NOT FFMPEG_FOUND)
+  message(STATUS "FFmpeg's libraries not found: building without .mp4 movies (.apng only)")
+endif()
 find_package(PNG REQUIRED)
 find_library(READLINE_LIBRARY readline REQUIRED)
-find_package(GTest REQUIRED)
-find_package(benchmark REQUIRED)
+if(STRIDE_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(STRIDE_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
 # Optional: OpenMPI for sweeps across machines (Debian libopenmpi-dev, openmpi-bin).
 find_package(MPI COMPONENTS C)
 # Header and library found directly: Debian's mujocoConfig.cmake (2.2.2) names a qhull include

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "robot/core/json_writer.hpp"
+#include "robot/framework/enum_names.hpp"
+#include "simulator/scene/solver_names.hpp"
 
 namespace stride::sim {
 
@@ -15,9 +17,10 @@ std::string hash_hex(std::uint64_t h) {
 }
 
 std::string solver_text(const PhysicsSettings& physics) {
-  if (physics.solver == PhysicsSettings::Solver::Exact) return "exact";
   std::ostringstream o;
-  o << "iterative " << physics.iterations;
+  o << enum_name(physics.solver);
+  if (physics.solver == PhysicsSettings::Solver::Exact) return o.str();
+  o << " " << physics.iterations;
   if (physics.sor != 1.3) o << " sor " << physics.sor;
   return o.str();
 }
@@ -30,6 +33,8 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   // Results depend on the solver setting (README "Solver settings"), so every report names it.
   j.field("solver", solver_text(sim.scene().physics));
   j.field("sim_time", sim.time());
+  if (timing.interrupted)
+    j.field("interrupted", true).field("requested_time", timing.requested_time);
   j.field("wall_time", timing.wall_time);
   j.field("real_time_factor", timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0);
   j.field("physics_steps", static_cast<long long>(sim.steps()));
@@ -99,6 +104,9 @@ std::string run_report_text(const Simulation& sim, const RunTiming& timing) {
   o.precision(1);
   o << (timing.wall_time > 0 ? sim.time() / timing.wall_time : 0.0) << "x real time  hash "
     << hash_hex(sim.state_hash()) << "\n";
+  if (timing.interrupted)
+    o << "  interrupted at " << sim.time() << " s of " << timing.requested_time
+      << " s: the report covers what ran\n";
   for (int i = 0; i < sim.robot_count(); ++i) {
     const auto& r = sim.robot(i);
     const TorsoPose p = r.torso_pose();

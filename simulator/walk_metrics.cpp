@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "robot/model/kinematics/nao_fk.hpp"
+#include "robot/framework/enum_names.hpp"
 
 namespace stride::sim {
 namespace {
@@ -32,19 +33,7 @@ Tip tip_of(double pitch, double roll) {
 }  // namespace
 
 const char* tip_name(Tip t) {
-  switch (t) {
-    case Tip::Forward:
-      return "forward";
-    case Tip::Backward:
-      return "backward";
-    case Tip::Right:
-      return "right";
-    case Tip::Left:
-      return "left";
-    case Tip::None:
-      break;
-  }
-  return "none";
+  return enum_name(t).data();  // the names are literals: NUL-terminated
 }
 
 void WalkMetrics::observe(const SimulatedRobot& robot) {

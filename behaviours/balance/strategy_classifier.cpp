@@ -1,19 +1,10 @@
 #include "behaviours/balance/strategy_classifier.hpp"
+#include "robot/framework/enum_names.hpp"
 
 namespace stride::balance {
 
 std::string_view to_string(Strategy s) {
-  switch (s) {
-    case Strategy::ankle:
-      return "ankle";
-    case Strategy::hip:
-      return "hip";
-    case Strategy::combined:
-      return "combined";
-    case Strategy::none:
-      return "none";
-  }
-  return "none";
+  return enum_name(s);
 }
 
 Classification classify(const BalanceParams& p, const ComState& s0) {

@@ -5,11 +5,12 @@
 #include "behaviours/balance/ankle_strategy.hpp"
 #include "behaviours/balance/combined_strategy.hpp"
 #include "behaviours/balance/hip_strategy.hpp"
+#include "robot/framework/reflect.hpp"
 
 namespace stride::balance {
 
 enum class Strategy { ankle, hip, combined, none };
-std::string_view to_string(Strategy s);
+std::string_view to_string(Strategy s);  // EnumNames<Strategy>
 
 // Capture-point interval [lo, hi] of one strategy; at a given x0 it is the velocity interval
 // [omega (lo - x0), omega (hi - x0)].
@@ -31,3 +32,11 @@ struct Classification {
 Classification classify(const BalanceParams& p, const ComState& s0);
 
 }  // namespace stride::balance
+
+namespace stride {
+template <>
+struct EnumNames<balance::Strategy> {
+  static constexpr std::string_view type_name = "Strategy";
+  static constexpr std::array<std::string_view, 4> names{"ankle", "hip", "combined", "none"};
+};
+}  // namespace stride

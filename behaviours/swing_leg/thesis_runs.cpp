@@ -8,6 +8,7 @@
 #include "behaviours/walking/pattern/pattern_parameters.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::swing_leg {
 namespace {
@@ -118,7 +119,7 @@ ThesisRun thesis_run(const std::string& name) {
   } else {
     std::string known;
     for (const auto& n : thesis_run_names()) known += (known.empty() ? "" : ", ") + n;
-    throw Error("unknown swing-leg study '" + name + "' (expected " + known + ")");
+    throw Error("unknown swing-leg study " + quote(name) + " (expected " + known + ")");
   }
   return r;
 }

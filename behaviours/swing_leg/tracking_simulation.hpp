@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "robot/framework/reflect.hpp"
+
 namespace stride::swing_leg {
 
 enum class LegModel { Planar, ThreeD };
@@ -49,3 +51,11 @@ int parameter_count(LegModel m);
 std::vector<std::string> joint_names(LegModel m);
 
 }  // namespace stride::swing_leg
+
+namespace stride {
+template <>
+struct EnumNames<swing_leg::Controller> {
+  static constexpr std::string_view type_name = "Controller";
+  static constexpr std::array<std::string_view, 2> names{"adaptive", "pd"};
+};
+}  // namespace stride

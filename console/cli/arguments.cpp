@@ -1,12 +1,11 @@
 #include "console/cli/arguments.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <ostream>
 
 #include "behaviours/module_catalogue.hpp"
-
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
@@ -84,12 +83,11 @@ std::vector<std::string> ArgumentReader::texts(const std::string& flag) {
 }
 
 double ArgumentReader::number(const std::string& flag) {
-  const std::string t = text(flag);
-  double v = 0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v))
-    throw UsageError("stride " + command_ + ": " + flag + ": '" + t + "' is not a number");
-  return v;
+  try {
+    return parse_number(text(flag), "stride " + command_ + ": " + flag);
+  } catch (const Error& e) {
+    throw UsageError(e.what());  // a malformed value is a wrong command line
+  }
 }
 
 double ArgumentReader::number_or(const std::string& flag, double fallback) {
@@ -97,19 +95,17 @@ double ArgumentReader::number_or(const std::string& flag, double fallback) {
 }
 
 std::uint64_t ArgumentReader::unsigned_integer(const std::string& flag) {
-  const std::string t = text(flag);
-  std::uint64_t v = 0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (ec != std::errc() || end != t.data() + t.size())
-    throw UsageError("stride " + command_ + ": " + flag + ": '" + t +
-                     "' is not a non-negative integer");
-  return v;
+  try {
+    return parse_unsigned(text(flag), "stride " + command_ + ": " + flag);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
 }
 
 void ArgumentReader::finish() const {
   for (size_t i = 0; i < args_.size(); ++i)
     if (!used_.count(static_cast<int>(i)))
-      throw UsageError("stride " + command_ + ": unexpected argument '" + args_[i] + "'");
+      throw UsageError("stride " + command_ + ": unexpected argument " + quote(args_[i]));
 }
 
 }  // namespace stride::cli

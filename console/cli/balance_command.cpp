@@ -14,8 +14,12 @@
 #include "behaviours/balance/strategy_classifier.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
+#include "robot/core/number_text.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/json_writer.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
@@ -42,16 +46,7 @@ struct Options {
 };
 
 double parse_number(const std::string& flag, const std::string& text) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v))
-    throw UsageError(flag + " expects a number, got '" + text + "'");
-  return v;
+  return stride::parse_number(text, flag);
 }
 
 std::vector<double> parse_list(const std::string& flag, const std::string& text, std::size_t n) {
@@ -59,8 +54,8 @@ std::vector<double> parse_list(const std::string& flag, const std::string& text,
   std::stringstream ss(text);
   for (std::string item; std::getline(ss, item, ',');) out.push_back(parse_number(flag, item));
   if (out.size() != n)
-    throw UsageError(flag + " expects " + std::to_string(n) + " comma-separated numbers, got '" +
-                     text + "'");
+    throw UsageError(flag + " expects " + std::to_string(n) + " comma-separated numbers, got " +
+                     quote(text));
   return out;
 }
 
@@ -101,7 +96,7 @@ Options parse(Args args) {
       continue;
     }
     const auto it = numeric.find(a);
-    if (it == numeric.end()) throw UsageError("unknown argument '" + a + "'");
+    if (it == numeric.end()) throw UsageError("unknown argument " + quote(a));
     if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
     it->second(args[++i]);
   }
@@ -121,8 +116,8 @@ using plot::Run;
 
 struct Report {
   std::ostringstream text;
-  std::vector<std::pair<std::string, std::string>> json;  // key -> JSON value
-  plot::RunSet set;                                       // columns: first is "t"
+  JsonWriter json{JsonWriter::Style::Spaced};  // an open object: the fields of --json
+  plot::RunSet set;                            // columns: first is "t"
   std::vector<Figure> figures;
 };
 
@@ -134,6 +129,11 @@ std::string num(double v) {
   return s.str();
 }
 
+// The support polygon's borders the ZMP stays within (Sec. 7.2), drawn beside ZMP curves.
+std::vector<plot::Reference> sole_borders(const BalanceParams& p) {
+  return {{p.zmp_max, "front border of the sole"}, {p.zmp_min, "back border of the sole"}};
+}
+
 std::string state_name(const ComState& s) {
   return "(" + num(s.x) + "," + num(s.v) + ")";
 }
@@ -143,22 +143,21 @@ std::vector<ComState> cases(const Options& o, std::vector<ComState> thesis_defau
   return thesis_defaults;
 }
 
-std::string plan_json(const BangBangPlan& b) {
-  return "{\"recoverable\": " + std::string(b.recoverable ? "true" : "false") +
-         ", \"zmp\": " + num(b.zmp) + ", \"tau\": " + num(b.profile.tau) +
-         ", \"t1\": " + num(b.profile.t1) + ", \"t2\": " + num(b.profile.t2) +
-         ", \"theta_peak\": " + num(b.theta_peak) + "}";
+void write_plan(JsonWriter& j, const BangBangPlan& b) {
+  j.begin_object().field("recoverable", b.recoverable).field("zmp", b.zmp);
+  j.field("tau", b.profile.tau).field("t1", b.profile.t1).field("t2", b.profile.t2);
+  j.field("theta_peak", b.theta_peak).end_object();
 }
 
-std::string interval_json(const CaptureInterval& c) {
-  return "[" + num(c.lo) + ", " + num(c.hi) + "]";
+void write_interval(JsonWriter& j, double lo, double hi) {
+  j.begin_array().value(lo).value(hi).end_array();
 }
 
 void add_bang_bang_runs(Report& rep, const Options& o, const std::vector<ComState>& states,
                         bool combined) {
   rep.set.columns = {"t", "x", "v", "theta", "theta_dot", "tau", "zmp"};
   const double T = o.duration.value_or(1.5);
-  std::ostringstream cases_json;
+  rep.json.key("cases").begin_array();
   for (const ComState& s : states) {
     const BangBangPlan plan = combined ? plan_combined(o.p, s) : plan_hip(o.p, s);
     Run run{state_name(s), {}};
@@ -173,18 +172,18 @@ void add_bang_bang_runs(Report& rep, const Options& o, const std::vector<ComStat
              << ", tau " << num(plan.profile.tau) << " N m, t1 " << num(plan.profile.t1)
              << " s, t2 " << num(plan.profile.t2) << " s, theta(t2) " << num(plan.theta_peak)
              << " rad\n";
-    cases_json << (cases_json.tellp() ? ", " : "") << "{\"x0\": " << num(s.x)
-               << ", \"v0\": " << num(s.v) << ", \"plan\": " << plan_json(plan) << "}";
+    rep.json.begin_object().field("x0", s.x).field("v0", s.v).key("plan");
+    write_plan(rep.json, plan);
+    rep.json.end_object();
   }
-  rep.json.push_back({"cases", "[" + cases_json.str() + "]"});
+  rep.json.end_array();
 }
 
 Report run_command(const Options& o) {
   Report rep;
   const BalanceParams& p = o.p;
   const double w = p.omega();
-  rep.json.push_back({"command", "\"" + o.what + "\""});
-  rep.json.push_back({"omega", num(w)});
+  rep.json.begin_object().field("command", o.what).field("omega", w);
   const PhaseLine l1 = ankle_front_boundary(p), l2 = ankle_back_boundary(p);
   if (o.what == "classify") {
     const ComState s{o.x0.value_or(0.0), o.v0.value_or(0.0)};
@@ -204,17 +203,19 @@ Report run_command(const Options& o) {
              << ", zmp " << num(c.combined_plan.zmp) << " m, t1 " << num(c.combined_plan.profile.t1)
              << " s, t2 " << num(c.combined_plan.profile.t2) << " s\n"
              << "strategy: " << to_string(c.strategy) << "\n";
-    rep.json.push_back({"x0", num(s.x)});
-    rep.json.push_back({"v0", num(s.v)});
-    rep.json.push_back({"capture_point", num(c.capture_point)});
-    rep.json.push_back({"strategy", "\"" + std::string(to_string(c.strategy)) + "\""});
-    rep.json.push_back({"ankle", "{\"interval\": " + interval_json(c.ankle) +
-                                     ", \"recoverable\": " + (c.ankle_recovers ? "true" : "false") +
-                                     "}"});
-    rep.json.push_back({"hip", "{\"interval\": " + interval_json(c.hip) +
-                                   ", \"plan\": " + plan_json(c.hip_plan) + "}"});
-    rep.json.push_back({"combined", "{\"interval\": " + interval_json(c.combined) +
-                                        ", \"plan\": " + plan_json(c.combined_plan) + "}"});
+    rep.json.field("x0", s.x).field("v0", s.v).field("capture_point", c.capture_point);
+    rep.json.field("strategy", to_string(c.strategy));
+    rep.json.key("ankle").begin_object().key("interval");
+    write_interval(rep.json, c.ankle.lo, c.ankle.hi);
+    rep.json.field("recoverable", c.ankle_recovers).end_object();
+    for (const auto& [name, interval, plan] :
+         {std::tuple{"hip", c.hip, c.hip_plan}, {"combined", c.combined, c.combined_plan}}) {
+      rep.json.key(name).begin_object().key("interval");
+      write_interval(rep.json, interval.lo, interval.hi);
+      rep.json.key("plan");
+      write_plan(rep.json, plan);
+      rep.json.end_object();
+    }
     Options sub = o;
     sub.v0 = s.v;
     sub.x0 = s.x;
@@ -246,10 +247,12 @@ Report run_command(const Options& o) {
              << "  (ZMP at the front border " << num(p.zmp_max) << " m)\n"
              << "  l2: xdot = " << num(l2.slope) << " x + " << num(l2.intercept)
              << "  (ZMP at the back border " << num(p.zmp_min) << " m)\n";
-    rep.json.push_back(
-        {"l1", "{\"slope\": " + num(l1.slope) + ", \"intercept\": " + num(l1.intercept) + "}"});
-    rep.json.push_back(
-        {"l2", "{\"slope\": " + num(l2.slope) + ", \"intercept\": " + num(l2.intercept) + "}"});
+    for (const auto& [name, l] : {std::pair{"l1", l1}, {"l2", l2}})
+      rep.json.key(name)
+          .begin_object()
+          .field("slope", l.slope)
+          .field("intercept", l.intercept)
+          .end_object();
     std::vector<ComState> grid;
     for (int k = -5; k <= 8; ++k) grid.push_back({0.0, 0.1 * k});
     rep.set.columns = {"t", "x", "v", "zmp"};
@@ -278,24 +281,24 @@ Report run_command(const Options& o) {
     const ClosedLoopBoundaries c = closed_loop_boundaries(p, o.gains, o.x_set);
     rep.text << "PD closed loop kp " << num(o.gains.kp) << ", kd " << num(o.gains.kd)
              << " (Eqs. 7.16-7.20): k1 " << num(c.k1) << ", k2 " << num(c.k2) << "\n";
-    std::ostringstream lines_json;
+    rep.json.field("k1", c.k1).field("k2", c.k2).key("boundaries").begin_object();
     for (const auto& [n, l] : {std::pair{"l1", c.l1}, {"l2", c.l2}, {"a", c.a}, {"b", c.b}}) {
       rep.text << "  " << n << ": xdot = " << num(l.slope) << " x + " << num(l.intercept) << "\n";
-      lines_json << (lines_json.tellp() ? ", " : "") << "\"" << n
-                 << "\": {\"slope\": " << num(l.slope) << ", \"intercept\": " << num(l.intercept)
-                 << "}";
+      rep.json.key(n).begin_object().field("slope", l.slope).field("intercept", l.intercept);
+      rep.json.end_object();
     }
     for (const auto& [n, pt] : {std::pair{"A", c.A}, {"B", c.B}, {"C", c.C}, {"D", c.D}}) {
       rep.text << "  " << n << " = " << (pt ? state_name({pt->x, pt->v}) : "none (parallel)")
                << "\n";
-      lines_json << ", \"" << n << "\": "
-                 << (pt ? "[" + num(pt->x) + ", " + num(pt->v) + "]" : std::string("null"));
+      rep.json.key(n);
+      if (pt)
+        write_interval(rep.json, pt->x, pt->v);  // the point (x, xdot)
+      else
+        rep.json.null();
     }
-    rep.json.push_back({"k1", num(c.k1)});
-    rep.json.push_back({"k2", num(c.k2)});
-    rep.json.push_back({"boundaries", "{" + lines_json.str() + "}"});
+    rep.json.end_object();
     rep.set.columns = {"t", "x", "v", "zmp", "demanded_zmp", "ankle_torque"};
-    std::ostringstream cases_json;
+    rep.json.key("cases").begin_array();
     for (const ComState& s : cases(o, {{-0.4, 2.3}, {0.42, -2.3}, {-0.32, 2.3}, {0.37, -2.3}})) {
       const ClosedLoopRun r =
           simulate_closed_loop(p, o.gains, s, o.x_set, o.duration.value_or(3.0), o.dt);
@@ -305,12 +308,10 @@ Report run_command(const Options& o) {
       rep.set.runs.push_back(std::move(run));
       rep.text << "  " << state_name(s) << ": " << (r.converged ? "converges" : "diverges")
                << (r.saturated ? " (ZMP saturated at the sole border)" : "") << "\n";
-      cases_json << (cases_json.tellp() ? ", " : "") << "{\"x0\": " << num(s.x)
-                 << ", \"v0\": " << num(s.v)
-                 << ", \"converged\": " << (r.converged ? "true" : "false")
-                 << ", \"saturated\": " << (r.saturated ? "true" : "false") << "}";
+      rep.json.begin_object().field("x0", s.x).field("v0", s.v);
+      rep.json.field("converged", r.converged).field("saturated", r.saturated).end_object();
     }
-    rep.json.push_back({"cases", "[" + cases_json.str() + "]"});
+    rep.json.end_array();
     rep.figures.push_back({"fig7_5_lines",
                            "PD closed loop: boundaries and trajectories (Figs. 7.5-7.6)",
                            "x [m]",
@@ -324,14 +325,12 @@ Report run_command(const Options& o) {
                             {"b", c.b.slope, c.b.intercept}},
                            "[-0.6:0.6]",
                            "[-3:3]"});
-    rep.figures.push_back({"fig7_7_zmp",
-                           "ZMP during PD recovery (Fig. 7.7)",
-                           "t [s]",
-                           "ZMP [m]",
-                           {"zmp"},
-                           "",
-                           "",
-                           {}});
+    rep.figures.push_back({.stem = "fig7_7_zmp",
+                           .title = "ZMP during PD recovery (Fig. 7.7)",
+                           .x_label = "t [s]",
+                           .y_label = "ZMP [m]",
+                           .quantities = {"zmp"},
+                           .references = sole_borders(p)});
     rep.figures.push_back({"fig7_7_torque",
                            "Ankle torque during PD recovery (Fig. 7.7)",
                            "t [s]",
@@ -350,7 +349,8 @@ Report run_command(const Options& o) {
              << "  forward limit profile t1 " << num(h.forward_profile.t1) << " s, t2 "
              << num(h.forward_profile.t2) << " s; backward t1 " << num(h.backward_profile.t1)
              << " s, t2 " << num(h.backward_profile.t2) << " s\n";
-    rep.json.push_back({"interval", "[" + num(lo) + ", " + num(hi) + "]"});
+    rep.json.key("interval");
+    write_interval(rep.json, lo, hi);
     add_bang_bang_runs(
         rep, o,
         cases(o, combined ? std::vector<ComState>{{0, 0.8}, {0, 1.1}}
@@ -360,8 +360,13 @@ Report run_command(const Options& o) {
     const std::string tag = combined ? " (Fig. 7.11)" : " (Fig. 7.9)";
     rep.figures.push_back(
         {fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, "", "", {}, "", "[-0.4:0.4]"});
-    rep.figures.push_back(
-        {fig + "_hip_angle", "Hip angle" + tag, "t [s]", "theta [rad]", {"theta"}, "", "", {}});
+    rep.figures.push_back({.stem = fig + "_hip_angle",
+                           .title = "Hip angle" + tag,
+                           .x_label = "t [s]",
+                           .y_label = "theta [rad]",
+                           .quantities = {"theta"},
+                           .references = {{p.theta_max_forward, "hip pitch limit, forward"},
+                                          {p.theta_max_backward, "hip pitch limit, backward"}}});
     rep.figures.push_back({fig + "_hip_rate",
                            "Hip angular velocity" + tag,
                            "t [s]",
@@ -370,8 +375,13 @@ Report run_command(const Options& o) {
                            "",
                            "",
                            {}});
-    rep.figures.push_back(
-        {fig + "_hip_torque", "Hip torque" + tag, "t [s]", "tau_h [N m]", {"tau"}, "", "", {}});
+    rep.figures.push_back({.stem = fig + "_hip_torque",
+                           .title = "Hip torque" + tag,
+                           .x_label = "t [s]",
+                           .y_label = "tau_h [N m]",
+                           .quantities = {"tau"},
+                           .references = {{p.tau_forward, "tau_n-f, forward recovery"},
+                                          {p.tau_backward, "tau_n-b, backward recovery"}}});
   } else if (o.what == "lqr") {
     const LqrBalanceModel m = lqr_balance_model(p);
     const Eigen::Matrix4d Q = Eigen::Vector4d(o.q[0], o.q[1], o.q[2], o.q[3]).asDiagonal();
@@ -398,31 +408,32 @@ Report run_command(const Options& o) {
     rep.text << "  peaks: |x| " << num(peak[0]) << " m, |theta| " << num(peak[1]) << " rad, |zmp| "
              << num(peak[4]) << " m, |tau| " << num(peak[5]) << " N m; final |state| "
              << num(samples.back().state.norm()) << "\n";
-    std::ostringstream k;
+    rep.json.key("K").begin_array();  // row by row
     for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 4; ++j) k << (i || j ? ", " : "") << num(sol.K(i, j));
-    rep.json.push_back({"K", "[" + k.str() + "]"});
-    rep.json.push_back({"max_pole_real", num(sol.closed_loop_poles.real().maxCoeff())});
-    rep.json.push_back({"peak_x", num(peak[0])});
-    rep.json.push_back({"peak_theta", num(peak[1])});
-    rep.json.push_back({"peak_zmp", num(peak[4])});
-    rep.json.push_back({"peak_tau", num(peak[5])});
-    rep.json.push_back({"final_state_norm", num(samples.back().state.norm())});
+      for (int j = 0; j < 4; ++j) rep.json.value(sol.K(i, j));
+    rep.json.end_array();
+    rep.json.field("max_pole_real", sol.closed_loop_poles.real().maxCoeff());
+    rep.json.field("peak_x", peak[0]).field("peak_theta", peak[1]);
+    rep.json.field("peak_zmp", peak[4]).field("peak_tau", peak[5]);
+    rep.json.field("final_state_norm", samples.back().state.norm());
     rep.set.runs.push_back(std::move(run));
     rep.figures.push_back(
         {"fig7_13_com", "CoM under LQR (Fig. 7.13)", "t [s]", "x [m]", {"x"}, "", "", {}});
-    rep.figures.push_back({"fig7_14_state",
-                           "LQR state (Fig. 7.14)",
-                           "t [s]",
-                           "state",
-                           {"x", "theta", "xdot", "thetadot"},
-                           "",
-                           "",
-                           {}});
-    rep.figures.push_back(
-        {"fig7_14_inputs", "LQR inputs (Fig. 7.14)", "t [s]", "input", {"zmp", "tau"}, "", "", {}});
+    Figure state{.stem = "fig7_14_state", .title = "LQR state (Fig. 7.14)", .x_label = "t [s]"};
+    state.panels = {{"x [m]", {"x"}, {}},
+                    {"theta [rad]", {"theta"}, {}},
+                    {"xdot [m/s]", {"xdot"}, {}},
+                    {"thetadot [rad/s]", {"thetadot"}, {}}};
+    rep.figures.push_back(state);
+    Figure inputs{.stem = "fig7_14_inputs", .title = "LQR inputs (Fig. 7.14)", .x_label = "t [s]"};
+    inputs.panels = {{"ZMP [m]", {"zmp"}, sole_borders(p)},
+                     {"tau_h [N m]",
+                      {"tau"},
+                      {{p.tau_forward, "hip torque, forward recovery"},
+                       {p.tau_backward, "hip torque, backward recovery"}}}};
+    rep.figures.push_back(inputs);
   } else {
-    throw UsageError("unknown <what> '" + o.what + "'; " + kUsage);
+    throw UsageError("unknown <what> " + quote(o.what) + "; " + kUsage);
   }
   return rep;
 }
@@ -439,19 +450,16 @@ int balance_main(Args args, std::ostream& out, std::ostream& err) {
     } catch (const Error& e) {
       throw UsageError(e.what());  // a bad flag value, e.g. parameters that fail validation
     }
-    const Report rep = run_command(o);
+    if (!o.csv.empty()) console::check_output_file("--csv", o.csv);
+    if (!o.plots.empty()) console::check_output_dir("--plots", o.plots);
+    Report rep = run_command(o);
     if (!o.csv.empty()) plot::write_long_csv(rep.set, o.csv);
     if (!o.plots.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(o.plots, ec);
-      if (ec) throw Error("--plots: cannot create directory '" + o.plots + "'");
+      console::make_output_dir("--plots", o.plots);
       for (const Figure& f : rep.figures) plot::write_figure(rep.set, f, o.plots);
     }
     if (o.json) {
-      out << "{";
-      for (std::size_t i = 0; i < rep.json.size(); ++i)
-        out << (i ? ", " : "") << "\"" << rep.json[i].first << "\": " << rep.json[i].second;
-      out << "}\n";
+      out << rep.json.end_object().str() << "\n";
     } else {
       out << rep.text.str();
       if (!o.plots.empty()) out << "plots written to " << o.plots << "\n";

@@ -6,8 +6,12 @@
 #include <vector>
 
 #include "console/cli/subcommand.hpp"
+#include "robot/core/error.hpp"
+#include "robot/core/json_writer.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/model/dynamics/swing_leg_3d.hpp"
 #include "robot/model/dynamics/swing_leg_planar.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 namespace {
@@ -49,7 +53,7 @@ int fail(std::ostream& err, const std::string& message) {
 
 int dyn_main(Args args, std::ostream& out, std::ostream& err) {
   if (args.empty() || args[0] != "params")
-    return fail(err, args.empty() ? "expected params" : "'" + args[0] + "': expected params");
+    return fail(err, args.empty() ? "expected params" : quote(args[0]) + ": expected params");
   std::string model;
   bool json = false;
   for (size_t i = 1; i < args.size(); ++i) {
@@ -66,11 +70,12 @@ int dyn_main(Args args, std::ostream& out, std::ostream& err) {
   const std::vector<Entry> e = model == "planar" ? planar_entries() : spatial_entries();
   out << std::setprecision(6);
   if (json) {
-    out << "{\"model\": \"" << model << "\", \"a\": [";
-    for (size_t i = 0; i < e.size(); ++i) out << (i ? ", " : "") << e[i].value;
-    out << "], \"thesis\": [";
-    for (size_t i = 0; i < e.size(); ++i) out << (i ? ", " : "") << e[i].printed;
-    out << "]}\n";
+    JsonWriter j(JsonWriter::Style::Spaced);
+    j.begin_object().field("model", model).key("a").begin_array();
+    for (const Entry& x : e) j.value(x.value);
+    j.end_array().key("thesis").begin_array();
+    for (const Entry& x : e) j.value(parse_number(x.printed, "thesis value"));
+    out << j.end_array().end_object().str() << "\n";
     return 0;
   }
   out << "swing-leg parameters, " << model << " model (thesis App. C, data of Sec. 5.4.1)\n";

@@ -12,6 +12,7 @@
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/experiment_list.hpp"
 #include "console/experiments/parameter_overrides.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/sweep/sweep_request.hpp"
 #include "robot/core/error.hpp"
 
@@ -66,6 +67,7 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
         throw UsageError("stride experiment posture: --cases: expected a,b,... of case names");
     }
     a.finish();
+    if (!o.out_dir.empty()) console::check_output_dir("stride experiment: --out", o.out_dir);
     o.command = "stride experiment";
     for (const std::string& s : args) o.command += " " + s;
     return experiments::run_experiment(name, o, out, err);

@@ -10,13 +10,16 @@
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "robot/core/data_dir.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/json_writer.hpp"
 #include "robot/model/kinematics/dls_ik.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/model/kinematics/nao_joint_map.hpp"
 #include "robot/model/kinematics/nao_leg_ik.hpp"
 #include "robot/model/urdf_loader.hpp"
 #include "robot/nao/nao_dimensions.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 namespace {
@@ -58,16 +61,11 @@ std::vector<double> numbers(const std::string& text, const std::string& name, si
   std::vector<double> v;
   std::string word;
   while (in >> word) {
-    size_t used = 0;
-    double x = 0;
     try {
-      x = std::stod(word, &used);
-    } catch (const std::exception&) {
-      used = 0;
+      v.push_back(parse_number(word, "stride kin: " + name));
+    } catch (const Error& e) {
+      throw UsageError(e.what());
     }
-    if (used != word.size() || !std::isfinite(x))
-      throw UsageError("stride kin: " + name + ": '" + word + "' is not a number");
-    v.push_back(x);
   }
   if (v.size() != expected)
     throw UsageError("stride kin: " + name + ": expected " + std::to_string(expected) +
@@ -79,7 +77,8 @@ NaoChain chain_option(const std::map<std::string, std::string>& o) {
   const std::string name = required(o, "--chain");
   const auto c = chain_from_name(name);
   if (!c)
-    throw UsageError("stride kin: --chain: '" + name + "' is not head, larm, rarm, lleg or rleg");
+    throw UsageError("stride kin: --chain: " + quote(name) +
+                     " is not head, larm, rarm, lleg or rleg");
   return *c;
 }
 
@@ -109,8 +108,9 @@ Eigen::Isometry3d pose_from(const std::vector<double>& p) {
 void print_pose(std::ostream& out, const Eigen::Isometry3d& t, bool json) {
   const Eigen::Vector3d p = t.translation(), r = roll_pitch_yaw(t.linear());
   if (json) {
-    out << "{\"position\": [" << fmt(p.x()) << ", " << fmt(p.y()) << ", " << fmt(p.z())
-        << "], \"rpy\": [" << fmt(r.x()) << ", " << fmt(r.y()) << ", " << fmt(r.z()) << "]}\n";
+    JsonWriter j(JsonWriter::Style::Spaced);
+    j.begin_object().key("position").numbers(p).key("rpy").numbers(r).end_object();
+    out << j.str() << "\n";
   } else {
     out << "position (m):      " << fmt(p.x()) << " " << fmt(p.y()) << " " << fmt(p.z()) << "\n"
         << "roll pitch yaw:    " << fmt(r.x()) << " " << fmt(r.y()) << " " << fmt(r.z()) << "\n";
@@ -157,20 +157,17 @@ int ik(Args args, std::ostream& out) {
     reachable = r.converged;
     residual = r.error;
   }
-  const bool json = o.count("--json");
-  if (json)
-    out << "{\"reachable\": " << (reachable ? "true" : "false") << ", \"residual\": " << residual
-        << ", \"q\": {";
-  for (size_t i = 0; i < ids.size(); ++i) {
-    if (json)
-      out << (i ? ", " : "") << "\"" << hal::name(ids[i]) << "\": " << fmt(q[i]);
-    else
-      out << std::left << std::setw(16) << hal::name(ids[i]) << fmt(q[i]) << "\n";
+  if (o.count("--json")) {
+    JsonWriter j(JsonWriter::Style::Spaced);
+    j.begin_object().field("reachable", reachable).field("residual", residual);
+    j.key("q").begin_object();
+    for (size_t i = 0; i < ids.size(); ++i) j.field(hal::name(ids[i]), q[i]);
+    out << j.end_object().end_object().str() << "\n";
+    return 0;
   }
-  if (json)
-    out << "}}\n";
-  else
-    out << "reachable: " << (reachable ? "yes" : "no") << " (residual " << residual << ")\n";
+  for (size_t i = 0; i < ids.size(); ++i)
+    out << std::left << std::setw(16) << hal::name(ids[i]) << fmt(q[i]) << "\n";
+  out << "reachable: " << (reachable ? "yes" : "no") << " (residual " << residual << ")\n";
   return 0;
 }
 
@@ -185,7 +182,7 @@ int com(Args args, std::ostream& out) {
       const auto eq = pair.find('=');
       const auto id =
           eq == std::string::npos ? std::nullopt : hal::joint_from_name(pair.substr(0, eq));
-      if (!id) throw UsageError("stride kin: --q: '" + pair + "' is not JointName=value");
+      if (!id) throw UsageError("stride kin: --q: " + quote(pair) + " is not JointName=value");
       lola[hal::index(*id)] = numbers(pair.substr(eq + 1), "--q " + pair.substr(0, eq), 1)[0];
     }
   } else {
@@ -198,10 +195,11 @@ int com(Args args, std::ostream& out) {
   std::vector<Eigen::Isometry3d> poses;
   link_poses(m, q, poses);
   const Eigen::Vector3d c = centre_of_mass(m, poses);
-  if (o.count("--json"))
-    out << "{\"com\": [" << fmt(c.x()) << ", " << fmt(c.y()) << ", " << fmt(c.z())
-        << "], \"mass\": " << fmt(m.total_mass()) << "}\n";
-  else
+  if (o.count("--json")) {
+    JsonWriter j(JsonWriter::Style::Spaced);
+    j.begin_object().key("com").numbers(c).field("mass", m.total_mass()).end_object();
+    out << j.str() << "\n";
+  } else
     out << "centre of mass (m, torso frame): " << fmt(c.x()) << " " << fmt(c.y()) << " "
         << fmt(c.z()) << "\ntotal mass (kg): " << fmt(m.total_mass()) << "\n";
   return 0;
@@ -222,7 +220,7 @@ int kin_main(Args args, std::ostream& out, std::ostream& err) {
     if (verb == "fk") return fk(rest, out);
     if (verb == "ik") return ik(rest, out);
     if (verb == "com") return com(rest, out);
-    throw UsageError("stride kin: '" + verb + "': expected fk, ik or com");
+    throw UsageError("stride kin: " + quote(verb) + ": expected fk, ik or com");
   } catch (const Error& e) {
     return report_error(e, err);
   }

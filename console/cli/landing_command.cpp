@@ -7,8 +7,10 @@
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/landing_impact_study.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/data_dir.hpp"
+#include "console/session/headless_run.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {
@@ -20,11 +22,13 @@ int landing_main(Args args, std::ostream& out, std::ostream& err) {
     o.scene = a.has("--scene") ? a.text("--scene") : data_file("scenes/landing/landing_nao.xml");
     o.speed = a.number_or("--speed", o.speed);
     o.depth = a.number_or("--depth", o.depth);
-    o.duration = a.number_or("--seconds", o.duration);
+    o.duration = console::checked_run_seconds(a.number_or("--seconds", o.duration),
+                                              "stride landing: --seconds");
     o.stiffness.z() = a.number_or("--kz", o.stiffness.z());
     o.damping.z() = a.number_or("--bz", o.damping.z());
     const std::string csv = a.text_or("--csv", "");
     a.finish();
+    if (!csv.empty()) console::check_output_file("stride landing: --csv", csv);
     plot::Table table{{"t", "position_force", "impedance_force"}};
     out << "landing (Ch. 6): " << o.scene << ", sole planned down at " << o.speed << " m/s to "
         << o.depth * 1000 << " mm below the floor; impedance K_z " << o.stiffness.z()

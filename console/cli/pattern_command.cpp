@@ -10,14 +10,18 @@
 
 #include "behaviours/walking/pattern/pattern_joints.hpp"
 #include "behaviours/walking/pattern/pattern_parameter_list.hpp"
+#include "behaviours/walking/pattern/pattern_plausibility.hpp"
 #include "behaviours/walking/pattern/support_polygon.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 #include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
+#include "robot/core/number_text.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
@@ -38,16 +42,10 @@ constexpr const char* kUsage =
     "[--conventional] [--dt s] --csv out.csv [--plots dir]";
 
 double parse_period(const std::string& text) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const double v = parse_number(text, "--dt");
   // The lower bound keeps a 15 s walk to 150 000 samples.
-  if (used != text.size() || !(v >= 1e-4 && v <= 1.0))
-    throw UsageError("--dt: expected a period in [0.0001, 1] s, got '" + text + "'");
+  if (!(v >= 1e-4 && v <= 1.0))
+    throw UsageError("--dt: expected a period in [0.0001, 1] s, got " + quote(text));
   return v;
 }
 
@@ -65,7 +63,7 @@ PatternOptions parse_options(Args args) {
     } else if (a == "--set") {
       const std::string& kv = value();
       const std::size_t eq = kv.find('=');
-      if (eq == std::string::npos) throw UsageError("--set: expected name=value, got '" + kv + "'");
+      if (eq == std::string::npos) throw UsageError("--set: expected name=value, got " + quote(kv));
       sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
     } else if (a == "--conventional") {
       o.conventional = true;
@@ -76,7 +74,7 @@ PatternOptions parse_options(Args args) {
     } else if (a == "--plots") {
       o.plots = value();
     } else {
-      throw Error("unknown argument '" + a + "'");
+      throw Error("unknown argument " + quote(a));
     }
   }
   // Step counts derive their levels from V_min/V_max, so they are applied last.
@@ -153,7 +151,7 @@ void stick_diagram(const std::vector<Frame>& walk, model::Side side, const std::
 
 void write_plots(const std::vector<Frame>& walk, const walking::PatternParameters& p,
                  const std::string& dir) {
-  std::filesystem::create_directories(dir);
+  console::make_output_dir("--plots", dir);
   const std::string csv = dir + "/pattern.csv";
   plot::write_csv(csv, walk_table(walk));
   auto line_plot = [&](const std::string& stem, const std::string& x,
@@ -221,6 +219,8 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
   std::vector<Frame> walk;
   try {
     o = parse_options(args);
+    if (!o.csv.empty()) console::check_output_file("--csv", o.csv);
+    if (!o.plots.empty()) console::check_output_dir("--plots", o.plots);
     const std::vector<PatternSample> samples =
         o.conventional ? walking::sample_walk(walking::ConventionalPattern(o.params), o.dt)
                        : walking::sample_walk(walking::StretchedKneePattern(o.params), o.dt);
@@ -257,6 +257,8 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
       << " m per step; worst ZMP margin to the support polygon " << worst
       << " m; smallest support knee " << min_knee << " rad; " << unreachable
       << " samples out of the legs' reach\n";
+  for (const std::string& note : walking::plausibility_notes(o.params))
+    out << "note: " << note << "\n";
   if (unreachable == 0) return 0;
   err << "stride pattern: " << unreachable
       << " samples put a foot beyond its leg's reach (the IK clamped them)\n";

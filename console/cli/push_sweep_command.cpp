@@ -22,10 +22,15 @@
 #include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
+#include "robot/core/number_text.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/json_writer.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/runtime/parameter_override.hpp"
 #include "simulator/scene/scene_parser.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
@@ -40,20 +45,24 @@ struct SweepOptions {
   // along saturated trajectories, so classifying a little after the push is consistent.
   double estimate_delay = 0.03;
   std::optional<std::uint64_t> seed;
-  std::map<std::string, std::string> parameters;  // --set "Module.field=value ..."
+  std::vector<ParameterOverride> parameters;  // --set "Module.field=value ..."
 };
 
-std::map<std::string, std::string> parse_settings(const std::string& text) {
-  std::map<std::string, std::string> out;
+std::vector<ParameterOverride> parse_settings(const std::string& text) {
+  std::vector<ParameterOverride> out;
   std::istringstream ss(text);
   for (std::string item; ss >> item;) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos || item.find('.') > eq)
-      throw UsageError("stride push-sweep: --set: expected Module.field=value, got '" + item + "'");
-    out[item.substr(0, eq)] = item.substr(eq + 1);
+    try {
+      out.push_back(parse_parameter_override(item, "stride push-sweep: --set"));
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
   }
   return out;
 }
+
+// One sweep's pushes at most: each is a few simulated seconds, so 2000 take an hour or more.
+constexpr std::size_t kMaxPushes = 2000;
 
 // Feet moving more than this means the robot stepped or slid: not a recovery in place.
 constexpr double kMaxFootMotion = 0.02;
@@ -75,8 +84,8 @@ std::string module_of(const std::string& strategy) {
   if (strategy == "hip") return "HipBalance";
   if (strategy == "combined") return "CombinedBalance";
   if (strategy == "lqr") return "LqrBalance";
-  throw UsageError("stride push-sweep: --strategy: expected ankle, hip, combined or lqr, got '" +
-                   strategy + "'");
+  throw UsageError("stride push-sweep: --strategy: expected ankle, hip, combined or lqr, got " +
+                   quote(strategy));
 }
 
 bool strategy_recovers(const std::string& strategy, const balance::Classification& c) {
@@ -86,16 +95,11 @@ bool strategy_recovers(const std::string& strategy, const balance::Classificatio
 }
 
 double parse_value(const std::string& flag, const std::string& s) {
-  std::size_t used = 0;
-  double v = 0;
   try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
+    return parse_number(s, "stride push-sweep: " + flag);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
   }
-  if (used != s.size() || !std::isfinite(v))
-    throw UsageError("stride push-sweep: " + flag + ": expected a number, got '" + s + "'");
-  return v;
 }
 
 // "a:b:step" (inclusive) or "v1,v2,...".
@@ -109,12 +113,15 @@ std::vector<double> parse_list(const std::string& flag, const std::string& text)
     for (const auto& p : parts) v.push_back(parse_value(flag, p));
   } else {
     if (parts.size() != 3)
-      throw UsageError("stride push-sweep: " + flag + ": expected first:last:step, got '" + text +
-                       "'");
+      throw UsageError("stride push-sweep: " + flag + ": expected first:last:step, got " +
+                       quote(text));
     const double a = parse_value(flag, parts[0]), b = parse_value(flag, parts[1]),
                  s = parse_value(flag, parts[2]);
     if (!(s > 0) || b < a)
       throw UsageError("stride push-sweep: " + flag + ": expected first <= last and step > 0");
+    if ((b - a) / s >= kMaxPushes)
+      throw UsageError("stride push-sweep: " + flag + ": " + quote(text) + " has more than " +
+                       std::to_string(kMaxPushes) + " values; expected a coarser step");
     for (int i = 0; a + i * s <= b + 1e-9 * s; ++i) v.push_back(a + i * s);
   }
   if (v.empty()) throw UsageError("stride push-sweep: " + flag + ": expected at least one value");
@@ -134,7 +141,7 @@ PushResult run_push(const SweepOptions& o, double impulse, double direction) {
     throw InputError("stride push-sweep: " + o.scene + ": robot 0 needs a <controller>");
   auto& controller = scene.robots[0].controller;
   controller.providers["JointRequest"] = module_of(o.strategy);
-  for (const auto& [key, value] : o.parameters) controller.parameters[key] = value;
+  console::add_parameter_overrides(scene, o.parameters, "stride push-sweep: --set");
   const std::string robot = scene.robots[0].name;
   console::SimSession session(std::move(scene));
   auto& sim = session.simulation();
@@ -216,19 +223,19 @@ void write_csv(std::ostream& f, const std::vector<PushResult>& rs) {
 
 void write_json(std::ostream& out, const SweepOptions& o, const std::vector<PushResult>& rs) {
   int agree = 0;
-  out << "{\"strategy\": \"" << o.strategy << "\", \"pushes\": [";
-  for (std::size_t i = 0; i < rs.size(); ++i) {
-    const auto& r = rs[i];
+  JsonWriter j(JsonWriter::Style::Spaced);
+  j.begin_object().field("strategy", o.strategy).key("pushes").begin_array();
+  for (const PushResult& r : rs) {
     agree += r.agree();
-    out << (i ? ", " : "") << "{\"impulse\": " << r.impulse << ", \"direction\": " << r.direction
-        << ", \"x_est\": " << r.estimated.x << ", \"v_est\": " << r.estimated.v
-        << ", \"x_true\": " << r.truth.x << ", \"v_true\": " << r.truth.v << ", \"predicted\": \""
-        << balance::to_string(r.predicted.strategy) << "\", \"expected\": \""
-        << (r.expected_recovery ? "recover" : "fall") << "\", \"observed\": \"" << observed(r)
-        << "\", \"foot_motion\": " << r.foot_motion
-        << ", \"agree\": " << (r.agree() ? "true" : "false") << "}";
+    j.begin_object().field("impulse", r.impulse).field("direction", r.direction);
+    j.field("x_est", r.estimated.x).field("v_est", r.estimated.v);
+    j.field("x_true", r.truth.x).field("v_true", r.truth.v);
+    j.field("predicted", balance::to_string(r.predicted.strategy));
+    j.field("expected", r.expected_recovery ? "recover" : "fall").field("observed", observed(r));
+    j.field("foot_motion", r.foot_motion).field("agree", r.agree()).end_object();
   }
-  out << "], \"agreement\": " << static_cast<double>(agree) / rs.size() << "}\n";
+  j.end_array().field("agreement", static_cast<double>(agree) / rs.size()).end_object();
+  out << j.str() << "\n";
 }
 
 }  // namespace
@@ -262,6 +269,12 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
           ">= 0");
     for (double i : o.impulses)
       if (!(i >= 0)) throw UsageError("stride push-sweep: --impulses: expected values >= 0 N*s");
+    if (o.impulses.size() * o.directions.size() > kMaxPushes)
+      throw UsageError("stride push-sweep: " + std::to_string(o.impulses.size()) +
+                       " impulses x " + std::to_string(o.directions.size()) +
+                       " directions is more than one sweep runs (at most " +
+                       std::to_string(kMaxPushes) + " pushes); narrow the ranges or split the sweep");
+    if (!csv.empty()) console::check_output_file("stride push-sweep: --csv", csv);
 
     std::vector<PushResult> results;
     for (double impulse : o.impulses)

@@ -1,11 +1,14 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
-// [--video dir] [--view v] [--fps N] [--lola <socket> ...]`: a headless run, optionally with
-// pictures, optionally with a robot on LoLA (lola_run.hpp). With `--ensemble N
-// [--heading-spread rad] [--position-spread m] [--jobs N]`: N perturbed starts (seeds N.. on)
-// and the spread of their walks instead.
+// [--video walk.apng|walk.mp4|dir ...] [--view v] [--fps N] [--no-overlay] [--set Module.field=value ...]
+// [--lola <socket> ...]`: a headless run, optionally with pictures and a movie, optionally with a
+// robot on LoLA (lola_run.hpp). Output paths are checked before the run; Ctrl-C ends the run
+// early and still writes its report. With `--ensemble N [--heading-spread rad]
+// [--position-spread m] [--jobs N]`: N perturbed starts (seeds N.. on) and the spread of their
+// walks instead.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <optional>
 #include <ostream>
 
@@ -15,10 +18,14 @@
 #include "console/cli/lola_run.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/ensemble/ensemble_report.hpp"
+#include "console/output/interrupt_flag.hpp"
+#include "console/output/output_paths.hpp"
+#include "console/progress/progress_line.hpp"
+#include "console/session/headless_run.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "simulator/render/movie_file.hpp"
 #include "simulator/render/snapshot.hpp"
 #include "simulator/render/views.hpp"
 #include "simulator/run_report.hpp"
@@ -43,15 +50,28 @@ int run_ensemble(ArgumentReader& a, const std::string& scene, double seconds, st
   return 0;
 }
 
+// Every output named on the command line, checked before anything runs.
+void check_outputs(const std::string& report, const std::string& log, const std::string& snapshot,
+                   const std::vector<std::string>& videos) {
+  if (!report.empty()) console::check_output_file("stride run: --report", report);
+  if (!log.empty()) console::check_output_file("stride run: --log", log);
+  if (!snapshot.empty()) console::check_output_file("stride run: --snapshot", snapshot);
+  for (const std::string& v : videos)
+    if (render::is_movie_path(v))
+      console::check_output_file("stride run: --video", v);
+    else
+      console::check_output_dir("stride run: --video", v);
+}
+
 }  // namespace
 
 int run_main(Args args, std::ostream& out, std::ostream& err) {
   try {
     ArgumentReader a(args, "run");
+    const bool overlay = !a.flag("--no-overlay");  // before positional(), which skips values
     const std::string scene = a.positional("scene");
-    const double seconds = a.number_or("--seconds", 10.0);
-    if (const std::string p = limits::duration_problem(seconds); !p.empty())
-      throw UsageError("stride run: --seconds: " + p);
+    const double seconds =
+        console::checked_run_seconds(a.number_or("--seconds", 10.0), "stride run: --seconds");
     if (a.has("--ensemble")) return run_ensemble(a, scene, seconds, out);
     const std::optional<std::uint64_t> seed =
         a.has("--seed") ? std::optional<std::uint64_t>(a.unsigned_integer("--seed")) : std::nullopt;
@@ -59,16 +79,21 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
 
     const std::string log = a.text_or("--log", "");
     const std::string snapshot = a.text_or("--snapshot", "");
-    const std::string video = a.text_or("--video", "");
+    const std::vector<std::string> videos = a.texts("--video");
+    std::vector<ParameterOverride> overrides;
+    for (const std::string& set : a.texts("--set"))
+      overrides.push_back(parse_parameter_override(set, "stride run: --set"));
     const std::string view = a.text_or("--view", "");
     const double fps = a.number_or("--fps", 25.0);
     if (!(fps >= 1 && fps <= 1000))
       throw UsageError("stride run: --fps: expected 1 to 1000 frames/s");
     const LolaRunOptions lola = read_lola_options(a);
     a.finish();
+    check_outputs(report, log, snapshot, videos);
 
     sim::SceneDescription description = sim::parse_scene_file(scene);
     if (seed) description.physics.seed = *seed;
+    console::add_parameter_overrides(description, overrides, "stride run: --set");
     console::SimSession session(lola_scene(std::move(description), lola));
     auto& sim = session.simulation();
     if (!log.empty()) {
@@ -77,19 +102,27 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     }
     render::WorldRenderer renderer;
     render::VideoRecorder recorder;
-    if (!video.empty())
+    if (!videos.empty())
       recorder.start(
-          sim, video, view,
-          std::max<std::uint64_t>(1, std::llround(1.0 / (fps * sim.scene().physics.step))));
+          sim, videos, view,
+          std::max<std::uint64_t>(1, std::llround(1.0 / (fps * sim.scene().physics.step))), 0,
+          overlay);
     else if (!snapshot.empty())
       render::resolve_view(sim, view);  // a bad view fails before the run, not after it
     const auto server = attach_lola(session, lola, err);
+    console::InterruptFlag interrupt;
     const auto t0 = std::chrono::steady_clock::now();
-    if (recorder.active())
-      sim.run_for(seconds, [&] { recorder.after_step(renderer, sim); });
-    else
-      sim.run_for(seconds);
-    sim::RunTiming timing;
+    bool interrupted = false;
+    {
+      console::ProgressLine progress(
+          err,
+          {.label = "run", .total = seconds, .unit = "s", .decimals = 1, .rate_as_speedup = true},
+          console::progress_settings());
+      console::HeadlessRun run{.seconds = seconds, .interrupt = &interrupt, .progress = &progress};
+      if (recorder.active()) run.after_step = [&] { recorder.after_step(renderer, sim); };
+      interrupted = console::run_headless(sim, run);
+    }
+    sim::RunTiming timing{.interrupted = interrupted, .requested_time = seconds};
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (server) timing.lola = &server->report();
     out << sim::run_report_text(sim, timing);
@@ -99,9 +132,14 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     if (!report.empty()) {
       write_file(report, sim::run_report_json(sim, timing));
     }
-    if (!snapshot.empty()) render::write_snapshot(renderer, sim, snapshot, view);
-    if (recorder.active()) out << "video: " << recorder.frames() << " frames in " << video << "\n";
-    return 0;
+    if (!snapshot.empty()) render::write_snapshot(renderer, sim, snapshot, view, 0, overlay);
+    if (recorder.active()) {
+      recorder.stop();
+      out << "video: " << recorder.frames() << " frames in";
+      for (const std::string& v : videos) out << " " << v;
+      out << "\n";
+    }
+    return interrupted ? 128 + interrupt.signal() : 0;
   } catch (const Error& e) {
     return report_error(e, err);
   }

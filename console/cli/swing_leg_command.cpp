@@ -3,6 +3,7 @@
 // `stride swing-leg ode-track [--scene f] [--seconds S] [--preset P]` on the simulated NAO.
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
 #include <ostream>
 #include <sstream>
 
@@ -11,9 +12,13 @@
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "console/experiments/swing_leg_ode_study.hpp"
+#include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/data_dir.hpp"
+#include "console/progress/progress_line.hpp"
+#include "console/session/headless_run.hpp"
 #include "robot/core/error.hpp"
+#include "robot/framework/enum_names.hpp"
 
 namespace stride::cli {
 namespace {
@@ -21,7 +26,18 @@ namespace {
 using swing_leg::Controller;
 
 std::string controller_name(Controller c) {
-  return c == Controller::Adaptive ? "adaptive" : "pd";
+  return std::string(enum_name(c));
+}
+
+// A torque no NAO joint can give is flagged beside the figure: the motors' largest stall torque
+// at the joint (hip roll, nao-facts.md) with margin.
+std::string torque_note(double torque) {
+  constexpr double kLargestStall = 13.1;  // N m
+  if (torque <= 2 * kLargestStall) return "";
+  std::ostringstream s;
+  s << "  (!) " << std::setprecision(3) << torque / kLargestStall
+    << " x the largest NAO joint's stall torque (" << kLargestStall << " N m)";
+  return s.str();
 }
 
 std::string row(const Eigen::VectorXd& v) {
@@ -57,8 +73,10 @@ plot::Table table_of(const swing_leg::TrackingResult& r, swing_leg::LegModel m) 
 }
 
 void render(const std::string& csv, std::vector<plot::Series> series, const std::string& title,
-            const std::string& y_label, const std::string& png) {
+            const std::string& y_label, const std::string& png,
+            std::vector<plot::Reference> references = {}) {
   plot::PlotSpec spec;
+  spec.references = std::move(references);
   spec.csv_path = csv;
   spec.x_column = "t";
   spec.series = std::move(series);
@@ -70,7 +88,7 @@ void render(const std::string& csv, std::vector<plot::Series> series, const std:
 }
 
 void plots(const std::string& dir, const std::string& stem, const std::string& csv,
-           swing_leg::LegModel m, Controller c) {
+           swing_leg::LegModel m, Controller c, const swing_leg::TrackingResult& r) {
   const auto names = swing_leg::joint_names(m);
   const std::string who = controller_name(c);
   const auto series = [&](const std::string& suffix) {
@@ -90,21 +108,32 @@ void plots(const std::string& dir, const std::string& stem, const std::string& c
   render(csv, series("_torque"), stem + " " + who + ": control torque", "tau [N m]",
          dir + "/" + stem + "_" + who + "_torque.png");
   if (c != Controller::Adaptive) return;
+  // The last three groups are m b g moments [N m], the others inertias [kg m^2] (App. C); each
+  // estimate is drawn against its true value, dashed in the same colour.
   const int p = swing_leg::parameter_count(m);
   std::vector<plot::Series> inertial, gravitational;
-  for (int i = 1; i <= p; ++i)
-    (i > p - 3 ? gravitational : inertial).push_back({"a" + std::to_string(i), "", ""});
-  render(csv, inertial, stem + ": inertial parameter estimates", "",
-         dir + "/" + stem + "_inertial_estimates.png");
-  render(csv, gravitational, stem + ": gravitational parameter estimates", "",
-         dir + "/" + stem + "_gravitational_estimates.png");
+  std::vector<plot::Reference> inertial_true, gravitational_true;
+  for (int i = 1; i <= p; ++i) {
+    const bool g = i > p - 3;
+    auto& series = g ? gravitational : inertial;
+    const std::string name = "a" + std::to_string(i);
+    (g ? gravitational_true : inertial_true)
+        .push_back(
+            {r.true_parameters[i - 1], name + " true", false, static_cast<int>(series.size())});
+    series.push_back({name, name + " estimate", ""});
+  }
+  render(csv, inertial, stem + ": inertial parameter estimates", "a [kg m^2]",
+         dir + "/" + stem + "_inertial_estimates.png", inertial_true);
+  render(csv, gravitational, stem + ": gravitational parameter estimates", "a [N m]",
+         dir + "/" + stem + "_gravitational_estimates.png", gravitational_true);
 }
 
 // Sec. 5.4.2: both laws on the simulated NAO over a grid of gains a 1 kHz torque loop allows.
 int ode_track(ArgumentReader& a, std::ostream& out) {
   experiments::OdeSwingLegOptions o;
   o.scene = a.has("--scene") ? a.text("--scene") : data_file("scenes/swing_leg/hanging_nao.xml");
-  o.duration = a.number_or("--seconds", 10);
+  o.duration =
+      console::checked_run_seconds(a.number_or("--seconds", 10), "stride swing-leg: --seconds");
   o.preset = a.text_or("--preset", "medium");
   const double gamma_scale = a.number_or("--gamma-scale", 1.0);
   if (!(gamma_scale > 0)) throw UsageError("stride swing-leg: --gamma-scale: expected > 0");
@@ -116,6 +145,9 @@ int ode_track(ArgumentReader& a, std::ostream& out) {
   out << "lambda  K_D   controller  rms error [rad] (hip roll .. ankle roll)        max |tau|  "
          "beyond stall\n";
   const std::pair<double, double> grid[] = {{10, 0.05}, {20, 0.1}, {40, 0.1}, {20, 0.2}};
+  console::ProgressLine progress(
+      std::cerr, {.label = "swing-leg ode-track", .total = 2.0 * std::size(grid), .unit = "runs"},
+      console::progress_settings());
   for (const auto& [lambda, kd] : grid)
     for (Controller c : {Controller::Adaptive, Controller::Pd}) {
       o.lambda = lambda;
@@ -125,7 +157,9 @@ int ode_track(ArgumentReader& a, std::ostream& out) {
       out << std::fixed << std::setprecision(2) << std::setw(6) << lambda << "  " << kd << "  "
           << std::left << std::setw(10) << controller_name(c) << std::right << "  "
           << row(r.rms_error) << "  " << std::fixed << std::setprecision(2) << r.max_torque
-          << " N m  " << std::setprecision(1) << 100 * r.saturated << " %\n";
+          << " N m  " << std::setprecision(1) << 100 * r.saturated << " %"
+          << torque_note(r.max_torque) << "\n";
+      progress.advance();
     }
   return 0;
 }
@@ -147,17 +181,14 @@ int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
     const std::string which = a.text_or("--controller", "both");
     if (which != "adaptive" && which != "pd" && which != "both")
       throw UsageError("stride swing-leg: --controller: expected adaptive, pd or both");
-    run.options.duration = a.number_or("--seconds", run.options.duration);
+    run.options.duration = console::checked_run_seconds(
+        a.number_or("--seconds", run.options.duration), "stride swing-leg: --seconds");
     run.options.dt = a.number_or("--dt", run.options.dt);
     const std::string csv_dir = a.text_or("--csv", "");
     const std::string plot_dir = a.text_or("--plots", "");
     a.finish();
-    for (const auto& d : {csv_dir, plot_dir})
-      if (!d.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(d, ec);
-        if (ec) throw Error("stride swing-leg: cannot create directory '" + d + "'");
-      }
+    if (!csv_dir.empty()) console::make_output_dir("stride swing-leg: --csv", csv_dir);
+    if (!plot_dir.empty()) console::make_output_dir("stride swing-leg: --plots", plot_dir);
 
     const auto m = run.options.model;
     out << "swing-leg " << run.name << " (" << run.figures << "), " << run.options.duration
@@ -173,7 +204,7 @@ int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
       out << std::left << std::setw(9) << controller_name(c) << " rms error [rad] "
           << row(r.rms_error) << "  last fifth " << row(r.late_rms_error) << "  max "
           << row(r.max_error) << "  max |tau| " << std::fixed << std::setprecision(1)
-          << r.max_torque << " N m\n";
+          << r.max_torque << " N m" << torque_note(r.max_torque) << "\n";
       if (c == Controller::Adaptive)
         out << "          a (true)  " << row(r.true_parameters) << "\n"
             << "          a^ (end)  " << row(r.final_estimate) << "\n";
@@ -182,7 +213,7 @@ int swing_leg_main(Args args, std::ostream& out, std::ostream& err) {
       if (dir.empty()) continue;
       const std::string csv = dir + "/" + stem + "_" + controller_name(c) + ".csv";
       plot::write_csv(csv, table_of(r, m));
-      if (!plot_dir.empty() && !plot::png_terminal().empty()) plots(plot_dir, stem, csv, m, c);
+      if (!plot_dir.empty() && !plot::png_terminal().empty()) plots(plot_dir, stem, csv, m, c, r);
     }
     return 0;
   } catch (const Error& e) {

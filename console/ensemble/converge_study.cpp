@@ -27,7 +27,7 @@ void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s
                mean(e.steps), e.steps.sd, mean(e.foot_slip_net_x), mean(e.foot_tilted_time),
                e.real_time_factor, e.wall_per_member});
   }
-  const std::string x = "setting, numbered as in the table";
+  const std::string x = "setting, numbered in converge_settings.txt [-]";
   experiments::write_plot(o.files, t, "converge_distance", o.scene + ": kept walks' true distance",
                           "setting",
                           {{"distance_mean", "mean", ""},
@@ -40,7 +40,7 @@ void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s
                           {{"lost", "lost (fell or tipped)", ""},
                            {"fell", "fell", ""},
                            {"steps_mean", "steps (kept, mean)", ""}},
-                          x, "count", "linespoints");
+                          x, "walks or steps [-]", "linespoints");
   std::string names;
   for (std::size_t i = 0; i < o.settings.size(); ++i)
     names += std::to_string(i + 1) + " " + o.settings[i] + "\n";

@@ -11,6 +11,7 @@
 #include "console/sweep/sweep_request.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -91,13 +92,13 @@ std::string experiment_names() {
 std::string experiment_sweep_file(const std::string& name, const std::string& sweeps_dir) {
   if (name == "kalman") return "";
   if (std::find(kSweeps.begin(), kSweeps.end(), name) == kSweeps.end())
-    throw UsageError("stride experiment: unknown experiment '" + name + "' (expected one of " +
+    throw UsageError("stride experiment: unknown experiment " + quote(name) + " (expected one of " +
                      experiment_names() + ")");
   const std::filesystem::path p =
       std::filesystem::path(find_input(sweeps_dir)) / (name + ".sweep.xml");
   if (!std::filesystem::exists(p))
-    throw InputError("experiment sweep file '" + p.string() +
-                     "' not found (--sweeps <dir> chooses another)");
+    throw InputError("experiment sweep file " + quote(p.string()) +
+                     " not found (--sweeps <dir> chooses another)");
   return p.string();
 }
 

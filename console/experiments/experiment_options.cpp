@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "robot/core/data_dir.hpp"
+#include "console/output/output_paths.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::experiments {
@@ -23,9 +24,7 @@ std::string scene_path(const ExperimentOptions& o, const std::string& name) {
 
 bool prepare_out_dir(const ExperimentOptions& o) {
   if (o.out_dir.empty()) return false;
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
-  if (ec) throw Error("--out: cannot create directory '" + o.out_dir + "': " + ec.message());
+  console::make_output_dir("--out", o.out_dir);
   return true;
 }
 
@@ -33,18 +32,23 @@ void write_plot(const ExperimentOptions& o, const plot::Table& table, const std:
                 const std::string& title, const std::string& x_column,
                 const std::vector<plot::Series>& series, const std::string& x_label,
                 const std::string& y_label, const std::string& style) {
+  write_plot(o, table, stem,
+             {.x_column = x_column,
+              .series = series,
+              .title = title,
+              .x_label = x_label,
+              .y_label = y_label,
+              .style = style});
+}
+
+void write_plot(const ExperimentOptions& o, const plot::Table& table, const std::string& stem,
+                plot::PlotSpec spec) {
   if (o.out_dir.empty()) return;
   const std::string base = (std::filesystem::path(o.out_dir) / stem).string();
   plot::write_csv(base + ".csv", table);
   if (!o.plots) return;
-  plot::PlotSpec spec{.csv_path = base + ".csv",
-                      .x_column = x_column,
-                      .series = series,
-                      .title = title,
-                      .x_label = x_label,
-                      .y_label = y_label,
-                      .png_path = base + ".png"};
-  spec.style = style;
+  spec.csv_path = base + ".csv";
+  spec.png_path = base + ".png";
   plot::render_png(spec);
 }
 

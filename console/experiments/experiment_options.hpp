@@ -42,6 +42,11 @@ void write_plot(const ExperimentOptions& o, const plot::Table& table, const std:
                 const std::vector<plot::Series>& series, const std::string& x_label,
                 const std::string& y_label, const std::string& style = "lines");
 
+// The same for a figure of several panels or with reference values: `spec` gives everything
+// but the file names.
+void write_plot(const ExperimentOptions& o, const plot::Table& table, const std::string& stem,
+                plot::PlotSpec spec);
+
 // Fixed-width table printing: a header, then rows of already formatted cells.
 void print_table(std::ostream& out, const std::vector<std::string>& header,
                  const std::vector<std::vector<std::string>>& rows);

@@ -1,15 +1,17 @@
 #include "console/experiments/parameter_overrides.hpp"
 
 #include "robot/core/error.hpp"
+#include "robot/runtime/parameter_override.hpp"
 
 namespace stride::experiments {
 
 std::pair<std::string, std::string> parse_parameter_override(const std::string& text) {
-  const std::size_t dot = text.find('.'), eq = text.find('=');
-  if (dot == std::string::npos || eq == std::string::npos || dot == 0 || eq < dot + 2 ||
-      eq + 1 == text.size())
-    throw UsageError("stride experiment: --set '" + text + "': expected Module.field=value");
-  return {text.substr(0, dot), text.substr(dot + 1)};
+  try {
+    const ParameterOverride o = stride::parse_parameter_override(text, "stride experiment: --set");
+    return {o.key.module, assignment_text(o)};
+  } catch (const Error& e) {
+    throw UsageError(e.what());  // a malformed --set is a wrong command line
+  }
 }
 
 WalkSetup with_overrides(const ExperimentOptions& o, WalkSetup setup) {

@@ -4,6 +4,7 @@
 #include "console/interpreter/edit_distance.hpp"
 #include "console/interpreter/tokenizer.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::console {
 namespace {
@@ -33,7 +34,7 @@ Command parse_checked(std::string_view line) {
   const CommandSpec* spec = find_command(c.name);
   if (!spec) {
     const std::string guess = nearest(c.name, command_names());
-    throw Error("unknown command '" + c.name + "'" +
+    throw Error("unknown command " + quote(c.name) +
                 (guess.empty() ? std::string(" (try help)") : "; did you mean '" + guess + "'?"));
   }
   const int n = static_cast<int>(c.args.size());

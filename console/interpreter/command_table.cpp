@@ -5,6 +5,7 @@
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/physical_limits.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::console {
 
@@ -27,7 +28,7 @@ namespace {
 
 void need_key(const std::string& key, bool framework_only) {
   if (framework_only ? !is_framework_key(key) : !is_value_key(key))
-    throw Error("'" + key + "' is not a key (representation:X" +
+    throw Error(quote(key) + " is not a key (representation:X" +
                 std::string(framework_only
                                 ? " or module:X)"
                                 : ", module:X, sim.*, robot.*, log.*, sweep.*, provider:X, "
@@ -51,12 +52,12 @@ void check_set(const Words& a) {
   need_key(a[0], true);
   if (a.size() == 2 && a[1] == "unchanged") {
     if (!a[0].starts_with("representation:"))
-      throw Error("'unchanged' releases a representation, not '" + a[0] + "'");
+      throw Error("'unchanged' releases a representation, not " + quote(a[0]));
     return;
   }
   for (std::size_t i = 1; i < a.size(); ++i)
     if (a[i].find('=') == std::string::npos || a[i].front() == '=')
-      throw Error("expected <field>=<value>, got '" + a[i] + "'");
+      throw Error("expected <field>=<value>, got " + quote(a[i]));
 }
 void check_mr(const Words& a) {
   if (a.size() == 1 && a[0] != "?") throw Error("give a module, default or ?");
@@ -95,8 +96,8 @@ void check_log(const Words& a) {
   } else if (s == "export") {
     if (n < 2) throw Error("'log export' takes a csv file and at least one key");
   } else {
-    throw Error("unknown log action '" + s +
-                "' (start, stop, save, load, info, goto, export, replay)");
+    throw Error("unknown log action " + quote(s) +
+                " (start, stop, save, load, info, goto, export, replay)");
   }
 }
 void check_push(const Words& a) {
@@ -106,14 +107,14 @@ void check_push(const Words& a) {
 }
 void check_snapshot(const Words& a) {
   if (a[0].size() < 5 || a[0].substr(a[0].size() - 4) != ".png")
-    throw Error("expected a file name ending in .png, got '" + a[0] + "'");
+    throw Error("expected a file name ending in .png, got " + quote(a[0]));
 }
 void check_video(const Words& a) {
   if (a[0] == "stop") {
     if (a.size() != 1) throw Error("video stop takes no arguments");
     return;
   }
-  if (a[0] != "start") throw Error("expected start or stop, got '" + a[0] + "'");
+  if (a[0] != "start") throw Error("expected start or stop, got " + quote(a[0]));
   parse_video_start(a);
 }
 void check_mv(const Words& a) {
@@ -123,7 +124,7 @@ void check_mv(const Words& a) {
 }
 void check_sn(const Words& a) {
   if (a[0] != "noise" && a[0] != "delay" && a[0] != "quantise")
-    throw Error("expected noise, delay or quantise, got '" + a[0] + "'");
+    throw Error("expected noise, delay or quantise, got " + quote(a[0]));
   parse_on_off(a[1], a[0]);
 }
 void check_expect(const Words& a) {
@@ -135,11 +136,11 @@ void check_sweep(const Words& a) {
   parse_sweep_arguments(a);
 }
 void check_wait(const Words& a) {
-  if (a[0] != "until") throw Error("expected 'until', got '" + a[0] + "'");
+  if (a[0] != "until") throw Error("expected 'until', got " + quote(a[0]));
   if (a.size() == 5) throw Error("give 'timeout <seconds>' after the value");
   check_expect({a[1], a[2], a[3]});
   if (a.size() == 6) {
-    if (a[4] != "timeout") throw Error("expected 'timeout', got '" + a[4] + "'");
+    if (a[4] != "timeout") throw Error("expected 'timeout', got " + quote(a[4]));
     if (!(parse_seconds(a[5], "timeout") > 0)) throw Error("timeout: expected > 0");
   }
 }
@@ -152,7 +153,7 @@ DebugSwitch parse_debug_switch(const std::string& word) {
 }
 
 VideoStart parse_video_start(const Words& a) {
-  if (a.size() < 2) throw Error("video start: expected a directory");
+  if (a.size() < 2) throw Error("video start: expected a movie file (.apng, .mp4) or a directory");
   VideoStart v;
   v.dir = a[1];
   std::size_t i = 2;
@@ -206,8 +207,9 @@ const std::vector<CommandSpec>& command_table() {
       {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
       {"snapshot", "snapshot <file.png> [view]",
        "render a picture (views: follow, front, side, top, scene cameras)", 1, 2, check_snapshot},
-      {"video", "video start <dir> [view] [fps N] | video stop",
-       "write numbered PNG frames while running (default 25 fps)", 1, 5, check_video},
+      {"video", "video start <file.apng|.mp4>|<dir> [view] [fps N] | video stop",
+       "record an MP4 movie or numbered PNG frames while running (default 25 fps)", 1, 5,
+       check_video},
       {"expect", "expect <key> <op> <value> [tolerance]", "check a value; fails a script", 3, 4,
        check_expect},
       {"wait", "wait until <key> <op> <value> [timeout <seconds>]", "run until a condition holds",

@@ -1,13 +1,17 @@
 // The commands of Interpreter that need more than one line: help, get, mr, dr, watch, plot, log,
 // report, expect, wait until.
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 
 #include "console/interpreter/command_table.hpp"
 #include "console/interpreter/interpreter.hpp"
+#include "console/interpreter/key_units.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "simulator/render/movie_file.hpp"
+#include "simulator/render/snapshot.hpp"
 
 namespace stride::console {
 
@@ -121,7 +125,16 @@ void Interpreter::finish() {
   plot::PlotSpec spec;
   spec.csv_path = plot_file_;
   spec.x_column = "t";
-  for (const auto& k : keys) spec.series.push_back({k, k, ""});
+  // One panel per unit, in the order the keys first name them: no axis mixes units.
+  for (const auto& k : keys) {
+    const std::string unit = unit_of_key(target_, k);
+    const std::string label = "[" + (unit.empty() ? std::string("-") : unit) + "]";
+    auto panel = std::find_if(spec.panels.begin(), spec.panels.end(),
+                              [&](const plot::Panel& p) { return p.y_label == label; });
+    if (panel == spec.panels.end())
+      panel = spec.panels.insert(spec.panels.end(), {label, {}, {}, ""});
+    panel->series.push_back({k, k, ""});
+  }
   spec.title = plot_file_;
   spec.x_label = "t [s]";
   const auto dot = plot_file_.rfind('.');
@@ -184,7 +197,10 @@ void Interpreter::video(const std::vector<std::string>& a) {
   const VideoStart v = parse_video_start(a);
   const double steps = 1.0 / (static_cast<double>(v.fps) * target_.step_seconds());
   target_.video_start(v.dir, v.view, std::max<std::uint64_t>(1, std::llround(steps)));
-  out_ << "video: frames to " << v.dir << "/ at " << v.fps << " fps while running\n";
+  if (render::is_movie_path(v.dir))
+    out_ << "video: movie " << v.dir << " at " << v.fps << " fps while running\n";
+  else
+    out_ << "video: frames to " << v.dir << "/ at " << v.fps << " fps while running\n";
 }
 
 namespace {

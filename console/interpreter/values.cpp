@@ -6,35 +6,20 @@
 
 #include "robot/core/error.hpp"
 #include "robot/model/physical_limits.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::console {
 
 namespace {
-bool read_double(std::string_view w, double& out) {
-  if (w.empty()) return false;
-  if (w.front() == '+') w.remove_prefix(1);
-  const auto r = std::from_chars(w.data(), w.data() + w.size(), out);
-  return r.ec == std::errc() && r.ptr == w.data() + w.size() && std::isfinite(out);
-}
 // Booleans compare as numbers so `expect robot.fell == 0` and `== false` both work.
 bool as_number(const std::string& w, double& out) {
   if (w == "true") return out = 1, true;
   if (w == "false") return out = 0, true;
-  return read_double(w, out);
+  if (!is_number(w)) return false;
+  out = parse_number(w, "");
+  return true;
 }
 }  // namespace
-
-bool is_number(std::string_view word) {
-  double v;
-  return read_double(word, v);
-}
-
-double parse_number(std::string_view word, const std::string& what) {
-  double v;
-  if (!read_double(word, v))
-    throw Error(what + ": expected a number, got '" + std::string(word) + "'");
-  return v;
-}
 
 double parse_bounded(std::string_view word, const std::string& what, double bound,
                      const std::string& unit) {
@@ -53,22 +38,10 @@ double parse_seconds(std::string_view word, const std::string& what) {
   return v;
 }
 
-long long parse_integer(std::string_view word, const std::string& what, long long low,
-                        long long high) {
-  long long v = 0;
-  const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
-  if (word.empty() || r.ec != std::errc() || r.ptr != word.data() + word.size())
-    throw Error(what + ": expected an integer, got '" + std::string(word) + "'");
-  if (v < low || v > high)
-    throw Error(what + ": " + std::to_string(v) + " is outside [" + std::to_string(low) + ", " +
-                std::to_string(high) + "]");
-  return v;
-}
-
 bool parse_on_off(std::string_view word, const std::string& what) {
   if (word == "on") return true;
   if (word == "off") return false;
-  throw Error(what + ": expected on or off, got '" + std::string(word) + "'");
+  throw Error(what + ": expected on or off, got " + quote(word));
 }
 
 Op parse_op(std::string_view w) {
@@ -79,7 +52,7 @@ Op parse_op(std::string_view w) {
   if (w == ">") return Op::Greater;
   if (w == ">=") return Op::GreaterEqual;
   if (w == "~=") return Op::Near;
-  throw Error("expected an operator (== != < <= > >= ~=), got '" + std::string(w) + "'");
+  throw Error("expected an operator (== != < <= > >= ~=), got " + quote(w));
 }
 
 std::string_view op_text(Op op) {
@@ -124,7 +97,7 @@ bool compare(const std::string& actual, Op op, const std::string& expected, doub
   }
   if (op == Op::Equal) return actual == expected;
   if (op == Op::NotEqual) return actual != expected;
-  throw Error("'" + actual + "' " + std::string(op_text(op)) + " '" + expected +
+  throw Error(quote(actual) + " " + std::string(op_text(op)) + " '" + expected +
               "': only == and != compare words");
 }
 

@@ -3,20 +3,20 @@
 #include <string>
 #include <string_view>
 
+#include "robot/core/number_text.hpp"
+
 namespace stride::console {
 
-// A finite number, the whole word; else stride::Error "<what>: expected a number, got 'x'".
-double parse_number(std::string_view word, const std::string& what);
+// Numbers through the project's one reader (robot/core/number_text.hpp).
+using stride::is_number;
+using stride::parse_integer;
+using stride::parse_number;
 // A number with |v| <= bound: "fx: 1e+308 N outside [-1e+07, 1e+07]" otherwise.
 double parse_bounded(std::string_view word, const std::string& what, double bound,
                      const std::string& unit);
 // A duration in [0, limits::kMaxDuration] seconds.
 double parse_seconds(std::string_view word, const std::string& what);
-// An integer in [low, high].
-long long parse_integer(std::string_view word, const std::string& what, long long low,
-                        long long high);
 bool parse_on_off(std::string_view word, const std::string& what);
-bool is_number(std::string_view word);
 
 enum class Op { Equal, NotEqual, Less, LessEqual, Greater, GreaterEqual, Near };
 Op parse_op(std::string_view word);  // == != < <= > >= ~=

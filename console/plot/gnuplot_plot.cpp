@@ -10,6 +10,7 @@
 #include "console/system/child_process.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::plot {
 
@@ -82,28 +83,89 @@ std::string png_terminal() {
   return terminal;
 }
 
-std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>& csv_columns,
-                           std::string_view terminal) {
-  if (spec.series.empty()) throw Error("plot: no series to draw in " + spec.png_path);
-  std::ostringstream s;
-  s << "set terminal " << terminal << " size " << spec.width << "," << spec.height
-    << (terminal == "pngcairo" ? " enhanced font 'Sans,10'" : "") << "\n";
-  s << "set output " << quoted(spec.png_path) << "\n";
-  s << "set datafile separator ','\nset datafile missing 'NaN'\nset key outside right\n";
-  s << "set grid\nset title " << quoted(spec.title) << " noenhanced\n";
-  s << "set xlabel " << quoted(spec.x_label) << "\nset ylabel " << quoted(spec.y_label) << "\n";
-  if (!spec.x_range.empty()) s << "set xrange " << spec.x_range << "\n";
-  if (!spec.y_range.empty()) s << "set yrange " << spec.y_range << "\n";
+bool labels_unit(std::string_view label) {
+  while (!label.empty() && label.back() == ' ') label.remove_suffix(1);
+  const std::size_t open = label.rfind('[');
+  return label.size() >= 3 && label.back() == ']' && open != std::string_view::npos &&
+         open + 2 < label.size();
+}
+
+namespace {
+
+// The panels a spec draws: its own, or one made of its single-axis fields.
+std::vector<Panel> panels_of(const PlotSpec& spec) {
+  if (!spec.panels.empty()) return spec.panels;
+  return {Panel{spec.y_label, spec.series, spec.references, spec.y_range}};
+}
+
+void check_units(const PlotSpec& spec, const std::vector<Panel>& panels) {
+  if (!labels_unit(spec.x_label))
+    throw Error("plot " + spec.png_path + ": x axis " + quote(spec.x_label) +
+                " names no unit (expected e.g. 't [s]')");
+  for (const Panel& p : panels)
+    if (!labels_unit(p.y_label))
+      throw Error("plot " + spec.png_path + ": y axis " + quote(p.y_label) +
+                  " names no unit (expected e.g. 'angle [rad]'; one unit per panel)");
+}
+
+// gnuplot's line colour of series i (its default sequence), so a reference can match its curve.
+std::string colour_of(int series) {
+  return series >= 0 ? "lc " + std::to_string(series + 1) : "lc rgb '#555555'";
+}
+
+void write_panel(std::ostringstream& s, const PlotSpec& spec, const Panel& panel,
+                 const std::vector<std::string>& csv_columns) {
+  if (panel.series.empty()) throw Error("plot: no series to draw in " + spec.png_path);
+  s << "set ylabel " << quoted(panel.y_label) << "\n";
+  s << (panel.y_range.empty() ? "set autoscale y" : "set yrange " + panel.y_range) << "\n";
+  s << "unset arrow\nunset label\n";
+  int vertical = 0;
+  for (const Reference& r : panel.references) {
+    if (!r.vertical) continue;
+    s << "set arrow from " << r.value << ", graph 0 to " << r.value
+      << ", graph 1 nohead dt 2 lw 1.5 " << colour_of(r.series) << "\n";
+    s << "set label " << ++vertical << " " << quoted(r.label) << " at " << r.value
+      << ", graph 0.97 left offset 0.5,0 noenhanced\n";
+  }
   s << "plot ";
-  for (std::size_t i = 0; i < spec.series.size(); ++i) {
-    const Series& ser = spec.series[i];
+  for (std::size_t i = 0; i < panel.series.size(); ++i) {
+    const Series& ser = panel.series[i];
     const std::string& xc = ser.x_column.empty() ? spec.x_column : ser.x_column;
     s << (i ? ", \\\n     " : "") << quoted(spec.csv_path) << " skip 1 using "
       << column_index(csv_columns, xc, spec.csv_path) << ":"
-      << column_index(csv_columns, ser.column, spec.csv_path) << " with " << spec.style
-      << " lw 2 title " << quoted(ser.label.empty() ? ser.column : ser.label) << " noenhanced";
+      << column_index(csv_columns, ser.column, spec.csv_path) << " with " << spec.style << " lw 2 "
+      << colour_of(static_cast<int>(i)) << " title "
+      << quoted(ser.label.empty() ? ser.column : ser.label) << " noenhanced";
   }
+  for (const Reference& r : panel.references)
+    if (!r.vertical)
+      s << ", \\\n     " << r.value << " with lines dt 2 lw 1.5 " << colour_of(r.series)
+        << " title " << quoted(r.label) << " noenhanced";
   s << "\n";
+}
+
+}  // namespace
+
+std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>& csv_columns,
+                           std::string_view terminal) {
+  const std::vector<Panel> panels = panels_of(spec);
+  check_units(spec, panels);
+  const int n = static_cast<int>(panels.size());
+  const int height = n == 1 ? spec.height : std::max(spec.height, (spec.height * 6 / 10) * n);
+  std::ostringstream s;
+  s << "set terminal " << terminal << " size " << spec.width << "," << height
+    << (terminal == "pngcairo" ? " enhanced font 'Sans,10'" : "") << "\n";
+  s << "set output " << quoted(spec.png_path) << "\n";
+  s << "set datafile separator ','\nset datafile missing 'NaN'\nset key outside right\n";
+  s << "set grid\nset xlabel " << quoted(spec.x_label) << "\n";
+  if (!spec.x_range.empty()) s << "set xrange " << spec.x_range << "\n";
+  if (n == 1)
+    s << "set title " << quoted(spec.title) << " noenhanced\n";
+  else  // panels share the x axis; the left margin lines their y axes up
+    s << "set multiplot layout " << n << ",1 title " << quoted(spec.title)
+      << " noenhanced\nset lmargin 12\n";
+  for (const Panel& p : panels) write_panel(s, spec, p, csv_columns);
+  if (n > 1) s << "unset multiplot\n";
   return s.str();
 }
 

@@ -34,6 +34,27 @@ struct Series {
   std::string x_column;
 };
 
+// A value a curve is compared with (a true parameter, a thesis figure): a dashed line across the
+// panel, horizontal at y = value or, if `vertical`, at x = value; in the colour of series
+// `series` of its panel when that is >= 0, else grey.
+struct Reference {
+  double value = 0;
+  std::string label;
+  bool vertical = false;
+  int series = -1;
+};
+
+// One y axis: curves of one unit. y_label names the quantity and its unit: "angle [rad]".
+struct Panel {
+  std::string y_label;
+  std::vector<Series> series;
+  std::vector<Reference> references;
+  std::string y_range;
+};
+
+// One figure. Either `series` with `y_label` (and `references`, `y_range`) for one axis, or
+// `panels`: stacked axes sharing x, one per unit, so that no axis mixes units. Every axis label
+// must end in its unit in brackets ("t [s]", "ratio [-]"); render_png refuses one that does not.
 struct PlotSpec {
   std::string csv_path;
   std::string x_column;
@@ -43,11 +64,16 @@ struct PlotSpec {
   std::string y_label;
   std::string png_path;
   int width = 900;
-  int height = 600;
+  int height = 600;             // of one panel; stacked panels take 0.6 of it each, at least
   std::string style = "lines";  // gnuplot style: lines, points, linespoints
   std::string x_range;          // gnuplot range such as "[-0.3:0.3]"; empty = automatic
   std::string y_range;
+  std::vector<Reference> references;
+  std::vector<Panel> panels;
 };
+
+// True when `label` ends in a bracketed unit: "t [s]", "[rad]", "K_p [-]".
+bool labels_unit(std::string_view label);
 
 // The PNG terminal this machine's gnuplot offers ("pngcairo" preferred, else "png"); empty if
 // gnuplot is not installed.

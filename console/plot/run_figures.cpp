@@ -28,8 +28,10 @@ void write_figure(const RunSet& set, const Figure& f, const std::string& dir) {
     return static_cast<std::size_t>(it - set.columns.begin());
   };
   const bool phase = !f.phase_x.empty();
-  const std::vector<std::string> qs =
+  std::vector<std::string> qs =
       phase ? std::vector<std::string>{f.phase_x, f.phase_y} : f.quantities;
+  for (const FigurePanel& p : f.panels)
+    qs.insert(qs.end(), p.quantities.begin(), p.quantities.end());
   std::size_t n = 0;
   for (const Run& r : set.runs) n = std::max(n, r.rows.size());
 
@@ -38,6 +40,8 @@ void write_figure(const RunSet& set, const Figure& f, const std::string& dir) {
                 dir + "/" + f.stem + ".png"};
   spec.x_range = f.x_range;
   spec.y_range = f.y_range;
+  spec.references = f.references;
+  for (const FigurePanel& p : f.panels) spec.panels.push_back({p.y_label, {}, p.references, ""});
   t.columns.push_back(set.columns.at(0));
   std::vector<std::pair<std::size_t, std::size_t>> picks;  // (run, column)
   double xmin = INFINITY, xmax = -INFINITY;                // finite phase-x span for the lines
@@ -55,6 +59,11 @@ void write_figure(const RunSet& set, const Figure& f, const std::string& dir) {
           xmin = std::min(xmin, row[col(f.phase_x)]);
           xmax = std::max(xmax, row[col(f.phase_x)]);
         }
+    } else if (!f.panels.empty()) {
+      for (std::size_t p = 0; p < f.panels.size(); ++p)
+        for (const std::string& q : f.panels[p].quantities)
+          spec.panels[p].series.push_back(
+              {q + id, (f.panels[p].quantities.size() > 1 ? q + " " : "") + label, ""});
     } else {
       for (const std::string& q : qs)
         spec.series.push_back({q + id, (qs.size() > 1 ? q + " " : "") + label, ""});

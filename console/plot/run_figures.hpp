@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "console/plot/gnuplot_plot.hpp"
+
 namespace stride::plot {
 
 struct Run {
@@ -28,6 +30,13 @@ struct Line {
   double intercept = 0.0;
 };
 
+// One axis of a time plot with several units: its quantities share the unit in y_label.
+struct FigurePanel {
+  std::string y_label;                  // "x [m]"
+  std::vector<std::string> quantities;  // columns drawn against column 0
+  std::vector<Reference> references;    // values they are compared with (thesis, limits)
+};
+
 struct Figure {
   std::string stem;  // file names <dir>/<stem>.csv, .png, .gp
   std::string title, x_label, y_label;
@@ -35,6 +44,8 @@ struct Figure {
   std::string phase_x, phase_y;         // if set: phase plot of phase_y against phase_x
   std::vector<Line> lines;              // phase plots only
   std::string x_range, y_range;         // gnuplot ranges such as "[-1:1]"; empty = automatic
+  std::vector<Reference> references;    // of the single axis (time or phase plot)
+  std::vector<FigurePanel> panels;      // if set: a time plot of stacked axes, one per unit
 };
 
 // Columns "case" (1-based run index) followed by the RunSet columns.

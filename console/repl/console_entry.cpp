@@ -7,6 +7,7 @@
 #include "console/repl/repl.hpp"
 #include "console/target/local_target.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::console {
 
@@ -27,11 +28,11 @@ ConsoleArgs read_args(const std::vector<std::string>& args) {
       (a == "--script" ? c.script : c.inline_commands) = args[++i];
       if (a == "-c") c.has_inline = true;
     } else if (a.starts_with("-")) {
-      throw UsageError("stride: unknown flag '" + a + "' (see stride --help)");
+      throw UsageError("stride: unknown flag " + quote(a) + " (see stride --help)");
     } else if (c.scene.empty()) {
       c.scene = a;
     } else {
-      throw UsageError("stride: unexpected argument '" + a + "' (one scene at most)");
+      throw UsageError("stride: unexpected argument " + quote(a) + " (one scene at most)");
     }
   }
   if (!c.script.empty() && c.has_inline) throw UsageError("stride: give --script or -c, not both");

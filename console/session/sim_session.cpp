@@ -5,19 +5,33 @@
 #include "robot/runtime/controller_schedule.hpp"
 #include "simulator/lola/lola_codec_link.hpp"
 #include "simulator/scene/scene_parser.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::console {
 
+void add_parameter_overrides(sim::SceneDescription& scene,
+                             const std::vector<ParameterOverride>& overrides,
+                             const std::string& what) {
+  if (overrides.empty()) return;
+  if (scene.robots.empty() || !scene.robots[0].has_controller)
+    throw Error(what + ": robot 0 of " + quote(scene.name) + " has no <controller>");
+  for (const ParameterOverride& o : overrides)
+    scene.robots[0].controller.parameters[o.key.module + "." + o.key.field] = o.value;
+}
+
 namespace {
-sim::SceneDescription load(const std::string& path, std::optional<std::uint64_t> seed) {
+sim::SceneDescription load(const std::string& path, std::optional<std::uint64_t> seed,
+                           const std::vector<ParameterOverride>& overrides) {
   sim::SceneDescription s = sim::parse_scene_file(path);
   if (seed) s.physics.seed = *seed;
+  add_parameter_overrides(s, overrides, "--set");
   return s;
 }
 }  // namespace
 
-SimSession::SimSession(const std::string& scene_path, std::optional<std::uint64_t> seed)
-    : SimSession(load(scene_path, seed)) {}
+SimSession::SimSession(const std::string& scene_path, std::optional<std::uint64_t> seed,
+                       const std::vector<ParameterOverride>& overrides)
+    : SimSession(load(scene_path, seed, overrides)) {}
 
 SimSession::SimSession(sim::SceneDescription scene) {
   behaviours::register_all_modules(registry_);

@@ -9,16 +9,25 @@
 #include <vector>
 
 #include "robot/framework/module_registry.hpp"
+#include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/runtime.hpp"
 #include "simulator/simulation.hpp"
 
 namespace stride::console {
 
+// Puts `overrides` into robot 0's controller configuration, after the scene's own parameters
+// (they win); throws stride::Error naming `what` when robot 0 has no <controller>.
+void add_parameter_overrides(sim::SceneDescription& scene,
+                             const std::vector<ParameterOverride>& overrides,
+                             const std::string& what);
+
 class SimSession {
  public:
   // Loads the scene and builds its controllers; throws stride::Error and builds nothing on error.
+  // `overrides` go to robot 0's controller (add_parameter_overrides).
   explicit SimSession(const std::string& scene_path,
-                      std::optional<std::uint64_t> seed = std::nullopt);
+                      std::optional<std::uint64_t> seed = std::nullopt,
+                      const std::vector<ParameterOverride>& overrides = {});
   explicit SimSession(sim::SceneDescription scene);
   ~SimSession();
 

@@ -7,6 +7,7 @@
 
 #include <tinyxml2.h>
 
+#include "console/plot/gnuplot_plot.hpp"
 #include "console/sweep/factor_parser.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/units.hpp"
@@ -141,6 +142,11 @@ PlotSpec parse_plot(const XmlElement& e) {
              split_list(e.text("y")),  e.line(),
              e.text_or("where", "")};
   if (p.y.empty()) e.fail_attr("y", "expected at least one column");
+  // Every axis names its unit (plots never mix units on one axis: one <plot> per unit).
+  if (!plot::labels_unit(p.x_label.empty() ? p.x : p.x_label))
+    e.fail_attr("x_label", "expected the x axis' unit in [], e.g. 'K_p [-]'");
+  if (!plot::labels_unit(p.y_label))
+    e.fail_attr("y_label", "expected the y axis' unit in [], e.g. 'sway [rad]'");
   return p;
 }
 

@@ -1,6 +1,7 @@
 #include "console/sweep/sweep_plots.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -38,6 +39,15 @@ std::vector<std::size_t> picked_rows(const TallyTable& t, const PlotSpec& p,
 double number(const Cell& c) {
   const double* d = std::get_if<double>(&c);
   return d ? *d : std::numeric_limits<double>::quiet_NaN();
+}
+
+// A column name as part of a file name: its unit ("sway[rad]") and anything but letters, digits,
+// '-', '_' and '.' left out, so "shake[rad/s]" never names a folder.
+std::string file_word(const std::string& column) {
+  std::string w;
+  for (const char c : column.substr(0, column.find('[')))
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') w += c;
+  return w;
 }
 
 void write_plot(const SweepSpec& spec, const PlotSpec& p, const TallyTable& t,
@@ -82,8 +92,8 @@ void write_plot(const SweepSpec& spec, const PlotSpec& p, const TallyTable& t,
     }
     table.add_row(std::move(row));
   }
-  std::string stem = t.name + "_" + p.x;
-  for (const std::string& y : p.y) stem += "_" + y;
+  std::string stem = t.name + "_" + file_word(p.x);
+  for (const std::string& y : p.y) stem += "_" + file_word(y);
   const std::string base = (std::filesystem::path(output.dir()) / stem).string();
   plot::write_csv(base + ".csv", table);
   if (!png) return;

@@ -334,7 +334,7 @@ void LocalTarget::snapshot(const std::string& png_path, const std::string& view)
 
 void LocalTarget::video_start(const std::string& dir, const std::string& view,
                               std::uint64_t every_steps) {
-  video_.start(session().simulation(), dir, view, every_steps, selected_);
+  video_.start(session().simulation(), {dir}, view, every_steps, selected_);
 }
 
 std::uint64_t LocalTarget::video_stop() {

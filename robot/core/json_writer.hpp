@@ -1,6 +1,10 @@
 #pragma once
-// A minimal streaming JSON writer: enough for reports and machine-readable command output.
+// The one JSON writer: run reports and every command's --json output. Stride writes JSON but
+// never reads it, so a streaming writer (no dependency for the robot binary) is all it needs.
+// Numbers are the shortest text that reads back to the same double; non-finite ones are null.
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -10,6 +14,10 @@ namespace stride {
 
 class JsonWriter {
  public:
+  // Compact: {"a":1,"b":[2,3]} (files). Spaced: {"a": 1, "b": [2, 3]} (one line for people).
+  enum class Style { Compact, Spaced };
+  explicit JsonWriter(Style style = Style::Compact) : spaced_(style == Style::Spaced) {}
+
   JsonWriter& begin_object() {
     value_prefix();
     out_ += '{';
@@ -35,7 +43,7 @@ class JsonWriter {
   JsonWriter& key(std::string_view k) {
     comma();
     string_literal(k);
-    out_ += ':';
+    out_ += spaced_ ? ": " : ":";
     after_key_ = true;
     return *this;
   }
@@ -45,8 +53,8 @@ class JsonWriter {
       out_ += "null";
     } else {
       char buf[32];
-      std::snprintf(buf, sizeof buf, "%.17g", v);
-      out_ += buf;
+      const auto r = std::to_chars(buf, buf + sizeof buf, v);
+      out_.append(buf, r.ptr);
     }
     return *this;
   }
@@ -56,6 +64,23 @@ class JsonWriter {
     return *this;
   }
   JsonWriter& value(int v) { return value(static_cast<long long>(v)); }
+  JsonWriter& value(std::uint64_t v) {
+    value_prefix();
+    out_ += std::to_string(v);
+    return *this;
+  }
+  JsonWriter& null() {
+    value_prefix();
+    out_ += "null";
+    return *this;
+  }
+  // An array of numbers in one call.
+  template <class Range>
+  JsonWriter& numbers(const Range& values) {
+    begin_array();
+    for (const double v : values) value(v);
+    return end_array();
+  }
   JsonWriter& value(bool v) {
     value_prefix();
     out_ += v ? "true" : "false";
@@ -77,7 +102,7 @@ class JsonWriter {
  private:
   void comma() {
     if (!first_.empty()) {
-      if (!first_.back()) out_ += ',';
+      if (!first_.back()) out_ += spaced_ ? ", " : ",";
       first_.back() = false;
     }
   }
@@ -118,6 +143,7 @@ class JsonWriter {
   std::string out_;
   std::vector<bool> first_;
   bool after_key_ = false;
+  bool spaced_ = false;
 };
 
 }  // namespace stride

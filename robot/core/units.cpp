@@ -5,6 +5,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
+
 namespace stride {
 namespace {
 
@@ -61,22 +64,21 @@ double parse_quantity(std::string_view text, Dimension d) {
   double value = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (ec != std::errc() || end == s.data())
-    throw std::invalid_argument("'" + std::string(text) + "' is not " +
-                                std::string(dimension_name(d)));
+    throw std::invalid_argument(quote(text) + " is not " + std::string(dimension_name(d)));
   if (!std::isfinite(value))
-    throw std::invalid_argument("'" + std::string(text) + "' is not finite (expected " +
+    throw std::invalid_argument(quote(text) + " is not finite (expected " +
                                 std::string(dimension_name(d)) + ")");
   const std::string_view unit = trim(s.substr(end - s.data()));
   if (unit.empty()) return value;
   for (const Unit& u : kUnits)
     if (u.name == unit) {
       if (u.dim != d)
-        throw std::invalid_argument("unit '" + std::string(unit) + "' in '" + std::string(text) +
-                                    "' (expected " + std::string(dimension_name(d)) + ")");
+        throw std::invalid_argument("unit " + quote(unit) + " in " + quote(text) + " (expected " +
+                                    std::string(dimension_name(d)) + ")");
       return value * u.factor;
     }
-  throw std::invalid_argument("unknown unit '" + std::string(unit) + "' in '" + std::string(text) +
-                              "' (expected " + std::string(dimension_name(d)) + ")");
+  throw std::invalid_argument("unknown unit " + quote(unit) + " in " + quote(text) + " (expected " +
+                              std::string(dimension_name(d)) + ")");
 }
 
 }  // namespace stride

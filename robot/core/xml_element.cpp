@@ -7,6 +7,7 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride {
 
@@ -15,7 +16,7 @@ void XmlElement::fail(const std::string& message) const {
 }
 
 void XmlElement::fail_attr(const char* attr, const std::string& message) const {
-  fail("attribute '" + std::string(attr) + "': " + message);
+  fail("attribute " + quote(attr) + ": " + message);
 }
 
 void XmlElement::allow_only(std::span<const std::string_view> allowed) const {
@@ -25,7 +26,7 @@ void XmlElement::allow_only(std::span<const std::string_view> allowed) const {
     if (!ok) {
       std::string list;
       for (auto n : allowed) list += (list.empty() ? "" : ", ") + std::string(n);
-      fail("unknown attribute '" + std::string(a->Name()) + "' (expected " +
+      fail("unknown attribute " + quote(std::string(a->Name())) + " (expected " +
            (list.empty() ? std::string("none") : list) + ")");
     }
   }
@@ -33,7 +34,7 @@ void XmlElement::allow_only(std::span<const std::string_view> allowed) const {
 
 std::string XmlElement::text(const char* attr) const {
   const char* v = e_->Attribute(attr);
-  if (!v) fail("missing attribute '" + std::string(attr) + "'");
+  if (!v) fail("missing attribute " + quote(attr));
   return v;
 }
 
@@ -61,7 +62,7 @@ int XmlElement::integer_or(const char* attr, int fallback, int min, int max) con
   int v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || end != t.data() + t.size() || v < min || v > max)
-    fail_attr(attr, "'" + t + "' (expected an integer in [" + std::to_string(min) + ", " +
+    fail_attr(attr, quote(t) + " (expected an integer in [" + std::to_string(min) + ", " +
                         std::to_string(max) + "])");
   return v;
 }
@@ -72,7 +73,7 @@ std::uint64_t XmlElement::seed_or(const char* attr, std::uint64_t fallback) cons
   std::uint64_t v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || end != t.data() + t.size())
-    fail_attr(attr, "'" + t + "' (expected a non-negative integer seed)");
+    fail_attr(attr, quote(t) + " (expected a non-negative integer seed)");
   return v;
 }
 
@@ -81,7 +82,7 @@ bool XmlElement::boolean_or(const char* attr, bool fallback) const {
   const std::string t = text(attr);
   if (t == "true" || t == "on" || t == "1") return true;
   if (t == "false" || t == "off" || t == "0") return false;
-  fail_attr(attr, "'" + t + "' (expected true/false or on/off)");
+  fail_attr(attr, quote(t) + " (expected true/false or on/off)");
 }
 
 namespace {
@@ -98,7 +99,7 @@ Eigen::Vector3d XmlElement::vector3_or(const char* attr, const Eigen::Vector3d& 
   if (!has(attr)) return fallback;
   const auto words = split_words(text(attr));
   if (words.size() != 3)
-    fail_attr(attr, "'" + text(attr) + "' (expected three values, each " +
+    fail_attr(attr, quote(text(attr)) + " (expected three values, each " +
                         std::string(dimension_name(d)) + ")");
   Eigen::Vector3d v;
   for (int i = 0; i < 3; ++i) try {
@@ -114,7 +115,7 @@ Eigen::Vector2d XmlElement::vector2_or(const char* attr, const Eigen::Vector2d& 
   if (!has(attr)) return fallback;
   const auto words = split_words(text(attr));
   if (words.size() != 2)
-    fail_attr(attr, "'" + text(attr) + "' (expected two values, each " +
+    fail_attr(attr, quote(text(attr)) + " (expected two values, each " +
                         std::string(dimension_name(d)) + ")");
   Eigen::Vector2d v;
   for (int i = 0; i < 2; ++i) try {
@@ -186,7 +187,7 @@ int XmlElement::choice_or(const char* attr, std::initializer_list<std::string_vi
     if (c == t) return i;
     list += (i++ ? ", " : "") + std::string(c);
   }
-  fail_attr(attr, "'" + t + "' (expected one of " + list + ")");
+  fail_attr(attr, quote(t) + " (expected one of " + list + ")");
 }
 
 }  // namespace stride

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
+
 namespace stride {
 
 namespace {
@@ -35,7 +38,7 @@ std::string number_text(double x, bool single) {
   return std::string(buf, res.ptr);
 }
 
-std::string quote(const std::string& s) {
+std::string quoted_string(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
@@ -60,7 +63,7 @@ void print_into(const TypeDesc& d, const Value& v, std::string& out) {
       out += number_text(std::get<double>(v.data), false);
       return;
     case Kind::String:
-      out += quote(std::get<std::string>(v.data));
+      out += quoted_string(std::get<std::string>(v.data));
       return;
     case Kind::Enum: {
       const auto i = std::get<std::int64_t>(v.data);
@@ -125,8 +128,7 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
   while (i < path.size()) {
     if (path[i] == '[') {
       const auto close = path.find(']', i);
-      if (close == std::string_view::npos)
-        throw fail("expected ']' in path '" + std::string(path) + "'");
+      if (close == std::string_view::npos) throw fail("expected ']' in path " + quote(path));
       const auto digits = path.substr(i + 1, close - i - 1);
       if (t.desc->kind != Kind::Array && t.desc->kind != Kind::List)
         throw fail("is a " + type_label(*t.desc) + ", not an array");
@@ -135,8 +137,8 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
       if (res.ec != std::errc() || res.ptr != digits.data() + digits.size()) {
         const int named = element_index(*t.desc, digits);
         if (named < 0 && !t.desc->element_names.empty())
-          throw fail("no element '" + std::string(digits) + "' (get <key> ? lists the names)");
-        if (named < 0) throw fail("expected an index in [], got '" + std::string(digits) + "'");
+          throw fail("no element " + quote(digits) + " (get <key> ? lists the names)");
+        if (named < 0) throw fail("expected an index in [], got " + quote(digits));
         index = static_cast<std::size_t>(named);
       }
       auto& items = std::get<Value::List>(t.value->data);
@@ -150,11 +152,11 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
     if (path[i] == '.')
       ++i;
     else if (i != 0)
-      throw fail("expected '.' or '[' in path '" + std::string(path) + "'");
+      throw fail("expected '.' or '[' in path " + quote(path));
     std::size_t end = i;
     while (end < path.size() && is_ident_char(path[end])) ++end;
     const auto name = path.substr(i, end - i);
-    if (name.empty()) throw fail("expected a field name in path '" + std::string(path) + "'");
+    if (name.empty()) throw fail("expected a field name in path " + quote(path));
     if (t.desc->kind == Kind::Array && t.desc->vector_components && name.size() == 1 &&
         std::string_view("xyzw").find(name[0]) != std::string_view::npos) {
       const auto index = std::string_view("xyzw").find(name[0]);
@@ -167,12 +169,12 @@ Target navigate(const TypeDesc& d, Value& v, std::string_view path, std::string_
       std::size_t k = 0;
       while (k < t.desc->fields.size() && t.desc->fields[k].name != name) ++k;
       if (k == t.desc->fields.size())
-        throw fail("no field '" + std::string(name) + "' (fields: " + field_list(*t.desc) + ")");
+        throw fail("no field " + quote(name) + " (fields: " + field_list(*t.desc) + ")");
       where.append(".").append(name);
       const auto& f = t.desc->fields[k];
       t = {f.type.get(), &std::get<Value::List>(t.value->data)[k], f.range};
     } else {
-      throw fail("is a " + type_label(*t.desc) + ", has no field '" + std::string(name) + "'");
+      throw fail("is a " + type_label(*t.desc) + ", has no field " + quote(name));
     }
     i = end;
   }
@@ -229,7 +231,7 @@ class Parser {
   }
   [[noreturn]] void fail_at(const std::string& where, std::string_view token,
                             const std::string& expected) {
-    throw InputError(where + ": expected " + expected + ", got '" + std::string(token) + "'");
+    throw InputError(where + ": expected " + expected + ", got " + quote(token));
   }
 
   void parse(const TypeDesc& d, Value& v, const std::string& where,

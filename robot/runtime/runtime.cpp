@@ -4,7 +4,10 @@
 #include <chrono>
 #include <utility>
 
+#include "robot/core/error.hpp"
+#include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/recorded_config.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride {
 
@@ -28,13 +31,13 @@ Key split_key(std::string_view key) {
     k.representation = false;
     rest = key.substr(7);
   } else {
-    throw Error("key '" + std::string(key) + "': expected representation:<Name> or module:<Name>");
+    throw Error("key " + quote(key) + ": expected representation:<Name> or module:<Name>");
   }
   const auto cut = std::min(rest.find('.'), rest.find('['));
   k.name = std::string(rest.substr(0, cut));
   if (cut != std::string_view::npos)
     k.path = std::string(rest.substr(rest[cut] == '.' ? cut + 1 : cut));
-  if (k.name.empty()) throw Error("key '" + std::string(key) + "': expected a name after ':'");
+  if (k.name.empty()) throw Error("key " + quote(key) + ": expected a name after ':'");
   return k;
 }
 
@@ -72,7 +75,7 @@ class Runtime::Context final : public ModuleContext {
       auto& p = rt_.parameters_[name_];
       if (!p) p = make();
       if (p->type() != type)
-        throw Error("module '" + name_ + "' asks for two different parameter types");
+        throw Error("module " + quote(name_) + " asks for two different parameter types");
       return *p;
     }
     if (!entry_) {
@@ -115,13 +118,11 @@ Runtime::Runtime(const ModuleRegistry& registry, RuntimeConfig config, hal::Hard
 
   std::map<std::string, std::string> updates;  // module -> "field=value ..."
   for (const auto& [key, value] : config_.parameters) {
-    const auto dot = key.find('.');
-    if (dot == std::string::npos || dot == 0)
-      throw Error("parameter '" + key + "': expected Module.field");
-    const auto module = key.substr(0, dot);
-    if (!parameters_.count(module))
-      throw Error("parameter '" + key + "': no module '" + module + "' with parameters");
-    updates[module] += key.substr(dot + 1) + "=" + value + " ";
+    const ParameterOverride o{parse_parameter_key(key, "parameter"), value};
+    if (!parameters_.count(o.key.module))
+      throw Error("parameter " + quote(key) + ": no module " + quote(o.key.module) +
+                  " with parameters");
+    updates[o.key.module] += assignment_text(o) + " ";
   }
   for (const auto& [module, text] : updates) parameters_.at(module)->update(text, module);
 
@@ -136,7 +137,7 @@ Slot& Runtime::blackboard_slot(std::string_view name, std::type_index type,
                                std::unique_ptr<Slot> (*make)()) {
   if (auto it = by_name_.find(name); it != by_name_.end()) {
     if (it->second->type() != type)
-      throw Error("representation '" + std::string(name) + "' is bound to two different C++ types");
+      throw Error("representation " + quote(name) + " is bound to two different C++ types");
     return *it->second;
   }
   slots_.push_back(make());
@@ -146,13 +147,13 @@ Slot& Runtime::blackboard_slot(std::string_view name, std::type_index type,
 
 const Slot& Runtime::typed_slot(std::string_view name, std::type_index type) const {
   const auto& s = representation_slot(std::string(name));
-  if (s.type() != type) throw Error("representation '" + std::string(name) + "' has another type");
+  if (s.type() != type) throw Error("representation " + quote(name) + " has another type");
   return s;
 }
 
 const Slot& Runtime::representation_slot(const std::string& name) const {
   auto it = by_name_.find(name);
-  if (it == by_name_.end()) throw Error("no representation '" + name + "' on the blackboard");
+  if (it == by_name_.end()) throw Error("no representation " + quote(name) + " on the blackboard");
   return *it->second;
 }
 
@@ -161,7 +162,7 @@ int Runtime::debug_request_index(std::string_view name) {
   auto it = std::find(names.begin(), names.end(), name);
   if (it != names.end()) return static_cast<int>(it - names.begin());
   if (names.size() >= kMaxDebugRequests)
-    throw Error("debug request '" + std::string(name) + "': more than " +
+    throw Error("debug request " + quote(name) + ": more than " +
                 std::to_string(kMaxDebugRequests) + " debug requests");
   names.emplace_back(name);
   return static_cast<int>(names.size()) - 1;
@@ -285,7 +286,7 @@ void Runtime::swap_provider(const std::string& representation, const std::string
 
 void Runtime::set_parameters(const std::string& module, std::string_view text) {
   auto it = parameters_.find(module);
-  if (it == parameters_.end()) throw Error("no module '" + module + "' with parameters");
+  if (it == parameters_.end()) throw Error("no module " + quote(module) + " with parameters");
   it->second->update(text, module);
 }
 
@@ -293,7 +294,7 @@ std::string Runtime::get(std::string_view key) const {
   const auto k = split_key(key);
   if (k.representation) return representation_slot(k.name).text_at(k.path, k.name);
   auto it = parameters_.find(k.name);
-  if (it == parameters_.end()) throw Error("no module '" + k.name + "' with parameters");
+  if (it == parameters_.end()) throw Error("no module " + quote(k.name) + " with parameters");
   return it->second->text_at(k.path, k.name);
 }
 
@@ -302,7 +303,7 @@ void Runtime::set(std::string_view key, std::string_view text) {
   const std::string update = k.path.empty() ? std::string(text) : k.path + "=" + std::string(text);
   if (!k.representation) return set_parameters(k.name, update);
   auto it = by_name_.find(k.name);
-  if (it == by_name_.end()) throw Error("no representation '" + k.name + "' on the blackboard");
+  if (it == by_name_.end()) throw Error("no representation " + quote(k.name) + " on the blackboard");
   if (text == "unchanged") {
     if (!k.path.empty())
       throw Error("'unchanged' releases a whole representation: set representation:" + k.name +
@@ -341,7 +342,7 @@ const TypeDesc& Runtime::type_of(std::string_view key) const {
   else if (auto it = parameters_.find(k.name); it != parameters_.end())
     s = it->second.get();
   else
-    throw Error("no module '" + k.name + "' with parameters");
+    throw Error("no module " + quote(k.name) + " with parameters");
   if (k.path.empty()) return s->desc();
   const auto v = s->value();
   return *value_at(s->desc(), v, k.path, k.name).first;
@@ -371,7 +372,7 @@ std::vector<std::pair<std::string, DebugSwitch>> Runtime::debug_requests() const
 void Runtime::set_debug_request(const std::string& name, DebugSwitch state) {
   const auto& names = debug_.names;
   auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw Error("no debug request '" + name + "' (dr ? lists them)");
+  if (it == names.end()) throw Error("no debug request " + quote(name) + " (dr ? lists them)");
   const auto i = static_cast<std::size_t>(it - names.begin());
   debug_.bits.set(i, state != DebugSwitch::Off);
   debug_.quiet.set(i, state == DebugSwitch::Quiet);

@@ -2,6 +2,7 @@
 
 #include "robot/core/error.hpp"
 #include "simulator/simulation.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::render {
 namespace {
@@ -54,7 +55,7 @@ CameraView resolve_view(const sim::Simulation& sim, const std::string& name, int
     }
   std::string known;
   for (const std::string& n : view_names(sim)) known += (known.empty() ? "" : ", ") + n;
-  throw Error("unknown view '" + want + "' (expected one of: " + known + ")");
+  throw Error("unknown view " + quote(want) + " (expected one of: " + known + ")");
 }
 
 }  // namespace stride::render

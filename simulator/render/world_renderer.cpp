@@ -3,7 +3,11 @@
 #include <GL/gl.h>
 #include <ode/ode.h>
 
+#include <set>
+
 #include "robot/core/error.hpp"
+#include "robot/model/robot_model.hpp"
+#include "simulator/render/body_side.hpp"
 #include "simulator/render/gl_shapes.hpp"
 #include "simulator/render/offscreen_gl.hpp"
 #include "simulator/world/geom_info.hpp"
@@ -12,17 +16,36 @@
 namespace stride::render {
 namespace {
 
-void set_colour(const sim::GeomInfo* info) {
+// The link a robot geom belongs to (robot bodies carry their model::Link).
+const model::Link* link_of(dGeomID g) {
+  dBodyID b = dGeomGetBody(g);
+  return b ? static_cast<const model::Link*>(dBodyGetData(b)) : nullptr;
+}
+
+// Left side blue, right side orange, the rest light grey: a walk reads at a glance.
+Eigen::Vector3d side_colour(BodySide side) {
+  switch (side) {
+    case BodySide::Left:
+      return {0.36, 0.56, 0.92};
+    case BodySide::Right:
+      return {0.93, 0.52, 0.30};
+    case BodySide::Centre:
+      break;
+  }
+  return {0.86, 0.86, 0.88};
+}
+
+void set_colour(dGeomID g, const sim::GeomInfo* info) {
   if (!info || info->robot < 0) {
     glColor3d(0.62, 0.55, 0.47);  // static environment
     return;
   }
+  const model::Link* link = link_of(g);
+  Eigen::Vector3d c = side_colour(link ? side_of_link(link->name) : BodySide::Centre);
   // Neighbouring links alternate in shade so the chain reads in a still picture.
-  const double shade = info->link % 2 == 0 ? 0.86 : 0.74;
-  if (info->robot == 0)
-    glColor3d(shade, shade, shade * 1.04);
-  else
-    glColor3d(shade * 0.8, shade * 0.9, shade * 1.1);
+  c *= info->link % 2 == 0 ? 1.0 : 0.86;
+  if (info->robot != 0) c = 0.5 * c + Eigen::Vector3d(0.2, 0.35, 0.2);  // other robots greener
+  glColor3d(c.x(), c.y(), c.z());
 }
 
 void load_pose(dGeomID g) {
@@ -45,7 +68,7 @@ void draw_geom(dGeomID g, const CameraView& view) {
     glPopMatrix();
     return;
   }
-  set_colour(static_cast<const sim::GeomInfo*>(dGeomGetData(g)));
+  set_colour(g, static_cast<const sim::GeomInfo*>(dGeomGetData(g)));
   glPushMatrix();
   load_pose(g);
   switch (cls) {
@@ -79,6 +102,36 @@ void draw_geom(dGeomID g, const CameraView& view) {
 void draw_space(dSpaceID space, const CameraView& view) {
   const int n = dSpaceGetNumGeoms(space);
   for (int i = 0; i < n; ++i) draw_geom(dSpaceGetGeom(space, i), view);
+}
+
+// Every hinge of the robots as a dot in its side's darker colour, drawn over the bodies (the
+// joints sit inside the links' shapes).
+void draw_joints(dSpaceID robots) {
+  std::set<dJointID> seen;
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_LIGHTING);
+  const int n = dSpaceGetNumGeoms(robots);
+  for (int i = 0; i < n; ++i) {
+    dBodyID b = dGeomGetBody(dSpaceGetGeom(robots, i));
+    if (!b) continue;
+    for (int k = 0; k < dBodyGetNumJoints(b); ++k) {
+      dJointID j = dBodyGetJoint(b, k);
+      if (dJointGetType(j) != dJointTypeHinge || !seen.insert(j).second) continue;
+      dBodyID child = dJointGetBody(j, 1) ? dJointGetBody(j, 1) : dJointGetBody(j, 0);
+      const auto* link = static_cast<const model::Link*>(dBodyGetData(child));
+      const Eigen::Vector3d c =
+          0.45 * side_colour(link ? side_of_link(link->name) : BodySide::Centre);
+      dVector3 anchor;
+      dJointGetHingeAnchor(j, anchor);
+      glColor3d(c.x(), c.y(), c.z());
+      glPushMatrix();
+      glTranslated(anchor[0], anchor[1], anchor[2]);
+      draw_sphere(0.009);
+      glPopMatrix();
+    }
+  }
+  glEnable(GL_LIGHTING);
+  glEnable(GL_DEPTH_TEST);
 }
 
 void set_lights(const std::vector<sim::SceneLight>& lights) {
@@ -135,6 +188,7 @@ RgbaImage WorldRenderer::render(const sim::PhysicsWorld& world, const CameraView
                 " engine's world is not drawn (only the ode engine's is)");
   draw_space(ode->static_space(), view);
   draw_space(ode->robot_space(), view);
+  draw_joints(ode->robot_space());
   return gl_->read();
 }
 

@@ -18,6 +18,7 @@
 #include "simulator/devices/device_parser.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/world/contact_softness.hpp"
+#include "simulator/scene/solver_names.hpp"
 
 namespace stride::sim {
 namespace {
@@ -145,9 +146,9 @@ class Parser {
     engine(e, p);
     p.step = e.number_or("step", p.step, Dimension::Time);
     if (p.step <= 0 || p.step > 0.02) e.fail_attr("step", "expected a time in (0, 20 ms]");
-    p.solver = e.choice_or("solver", {"exact", "iterative"}, 1) == 0
-                   ? PhysicsSettings::Solver::Exact
-                   : PhysicsSettings::Solver::Iterative;
+    using Solver = PhysicsSettings::Solver;
+    const auto& solvers = EnumNames<Solver>::names;
+    p.solver = static_cast<Solver>(e.choice_or("solver", {solvers[0], solvers[1]}, 1));
     p.iterations = e.integer_or("iterations", p.iterations, 1, 10000);
     p.sor = e.number_or("sor", p.sor);
     if (p.sor <= 0 || p.sor >= 2) e.fail_attr("sor", "expected a value in (0, 2)");

@@ -2,6 +2,7 @@
 # Types into the real `stride` REPL inside tmux and reads the screen back: tab completion of
 # commands, keys and fields; an error that does not end the session; history across runs; a
 # background `run` during which get, set, mr, realtime and pause are answered, and Ctrl-C pauses.
+# Runs in a temporary directory outside the checkout (the shipped scene is found by its name).
 # usage: repl_tmux_test.sh <stride binary> <source dir>. Exit 77 (skipped) without tmux.
 set -u
 stride=$1 src=$2
@@ -26,7 +27,7 @@ wait_for() {
 }
 start() {
   tm new-session -d -s t -x 160 -y 50 \
-    "cd '$src' && HOME='$home' '$stride' scenes/nao_stand_controlled.xml; sleep 30"
+    "cd '$home' && HOME='$home' '$stride' scenes/nao_stand_controlled.xml; sleep 30"
   wait_for '^stride> ?$'
 }
 

@@ -119,6 +119,20 @@ TEST(SweepParser, RecordAndTallies) {
   EXPECT_EQ(s.tallies[0].by, (std::vector<std::string>{"scene"}));
 }
 
+TEST(SweepParser, PlotAxesNameTheirUnits) {
+  const std::string tally = "<run seconds=\"1\"/><tally name=\"t\"><count name=\"n\"/></tally>\n";
+  const SweepSpec s = parse(tally + "<plot tally=\"t\" x=\"kd\" y=\"n\" x_label=\"K_d [s]\" "
+                                    "y_label=\"walks [-]\"/>");
+  ASSERT_EQ(s.plots.size(), 1u);
+  EXPECT_EQ(s.plots[0].x_label, "K_d [s]");
+  EXPECT_EQ(error(tally + "<plot tally=\"t\" x=\"kd\" y=\"n\" y_label=\"walks [-]\"/>"),
+            "dir/t.sweep.xml:3: <plot>: attribute 'x_label': expected the x axis' unit in [], e.g. "
+            "'K_p [-]'");
+  EXPECT_EQ(error(tally + "<plot tally=\"t\" x=\"kd [s]\" y=\"n\" y_label=\"walks\"/>"),
+            "dir/t.sweep.xml:3: <plot>: attribute 'y_label': expected the y axis' unit in [], e.g. "
+            "'sway [rad]'");
+}
+
 TEST(SweepParser, MistakesAreOneLineWithFileAndLine) {
   EXPECT_EQ(error("<run seconds=\"1\"/>\n<factr name=\"x\"/>"),
             "dir/t.sweep.xml:3: <factr>: unknown element (expected set, scene, factor, grid, "

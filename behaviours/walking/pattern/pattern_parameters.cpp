@@ -7,7 +7,9 @@
 
 #include "behaviours/walking/pattern/pattern_parameter_list.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/nao/nao_dimensions.hpp"
+#include "robot/core/quote.hpp"
 
 namespace stride::walking {
 
@@ -31,21 +33,11 @@ std::optional<std::string> level_error(const SpeedLevel& l, const std::string& w
 }
 
 double parse_double(const std::string& name, const std::string& value) {
-  double v = 0.0;
-  const char* end = value.data() + value.size();
-  auto [ptr, ec] = std::from_chars(value.data(), end, v);
-  if (ec != std::errc() || ptr != end || value.empty())
-    throw Error("parameter " + name + ": expected a number, got '" + value + "'");
-  return v;
+  return parse_number(value, "parameter " + name);
 }
 
 int parse_int(const std::string& name, const std::string& value) {
-  int v = 0;
-  const char* end = value.data() + value.size();
-  auto [ptr, ec] = std::from_chars(value.data(), end, v);
-  if (ec != std::errc() || ptr != end || value.empty())
-    throw Error("parameter " + name + ": expected an integer, got '" + value + "'");
-  return v;
+  return static_cast<int>(parse_integer(value, "parameter " + name, -1'000'000, 1'000'000));
 }
 
 // "vmin:vmax,vmin:vmax" (empty string = no intermediate level).
@@ -58,7 +50,7 @@ std::vector<SpeedLevel> parse_levels(const std::string& name, const std::string&
     const std::string item = value.substr(start, comma - start);
     const std::size_t colon = item.find(':');
     if (colon == std::string::npos)
-      throw Error("parameter " + name + ": expected vmin:vmax[,vmin:vmax...], got '" + value + "'");
+      throw Error("parameter " + name + ": expected vmin:vmax[,vmin:vmax...], got " + quote(value));
     levels.push_back(
         {parse_double(name, item.substr(0, colon)), parse_double(name, item.substr(colon + 1))});
     start = comma + 1;
@@ -232,7 +224,7 @@ void set_parameter(PatternParameters& p, const std::string& name, const std::str
     if (n < 1) throw Error("parameter " + name + ": must be >= 1 (got " + value + ")");
     (name == "development_steps" ? p.development : p.decay) = linear_levels(p.rhythmic, n);
   } else {
-    throw Error("unknown pattern parameter '" + name + "'");
+    throw Error("unknown pattern parameter " + quote(name));
   }
 }
 

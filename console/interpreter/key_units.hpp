@@ -1,0 +1,21 @@
+#pragma once
+// The unit of a console key's value, for axis labels: from the field list's units for
+// representation:/module: keys, from the simulator's conventions for robot.* and sim.* keys.
+#include <string>
+#include <string_view>
+
+namespace stride {
+struct TypeDesc;
+}
+
+namespace stride::console {
+
+class Target;
+
+// The unit of the field `path` ("position[10]", "com.x") of a described type; "" if none.
+std::string unit_of_path(const TypeDesc& type, std::string_view path);
+
+// The unit of `key`'s value ("rad", "m", "s"), "" when it has none or it is unknown.
+std::string unit_of_key(Target& target, const std::string& key);
+
+}  // namespace stride::console

@@ -1,0 +1,49 @@
+#include "robot/core/quote.hpp"
+
+#include <cstdio>
+
+namespace stride {
+namespace {
+
+constexpr std::size_t kQuoteLimit = 80;        // characters quoted whole
+constexpr std::size_t kHead = 56, kTail = 16;  // kept of a longer text
+
+void append_escaped(std::string& out, std::string_view text) {
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n')
+      out += "\\n";
+    else if (c == '\t')
+      out += "\\t";
+    else if (u < 0x20 || u == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    } else
+      out += c;
+  }
+}
+
+// Cuts fall on character boundaries: never inside a UTF-8 sequence.
+bool continuation(char c) {
+  return (static_cast<unsigned char>(c) & 0xc0) == 0x80;
+}
+
+}  // namespace
+
+std::string quote(std::string_view text) {
+  std::string out = "'";
+  if (text.size() <= kQuoteLimit) {
+    append_escaped(out, text);
+    return out + "'";
+  }
+  std::size_t head = kHead, tail = text.size() - kTail;
+  while (head > 0 && continuation(text[head])) --head;
+  while (tail < text.size() && continuation(text[tail])) ++tail;
+  append_escaped(out, text.substr(0, head));
+  out += "...";
+  append_escaped(out, text.substr(tail));
+  return out + "' (" + std::to_string(text.size()) + " characters)";
+}
+
+}  // namespace stride
