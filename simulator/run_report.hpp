@@ -8,10 +8,10 @@
 namespace stride::sim {
 
 struct RunTiming {
-  double wall_time = 0;                 // s
+  double wall_time = 0;                   // s
   const LolaServeReport* lola = nullptr;  // a robot served over LoLA: its frames, missed, lost
-  bool interrupted = false;   // stopped early (Ctrl-C): the report covers what ran
-  double requested_time = 0;  // s, the run asked for (reported when interrupted)
+  bool interrupted = false;               // stopped early (Ctrl-C): the report covers what ran
+  double requested_time = 0;              // s, the run asked for (reported when interrupted)
 };
 
 std::string run_report_json(const Simulation& sim, const RunTiming& timing);

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/framework/enum_names.hpp"
+#include "robot/model/kinematics/nao_fk.hpp"
 
 namespace stride::sim {
 namespace {

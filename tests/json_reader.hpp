@@ -25,9 +25,7 @@ struct Json {
     if (it == o.end()) throw std::runtime_error("json: no key '" + key + "'");
     return it->second;
   }
-  const Json& operator[](std::size_t i) const {
-    return std::get<std::shared_ptr<Array>>(v)->at(i);
-  }
+  const Json& operator[](std::size_t i) const { return std::get<std::shared_ptr<Array>>(v)->at(i); }
   std::size_t size() const {
     if (const auto* a = std::get_if<std::shared_ptr<Array>>(&v)) return (*a)->size();
     return std::get<std::shared_ptr<Object>>(v)->size();
@@ -55,8 +53,8 @@ class JsonReader {
     throw std::runtime_error("json at " + std::to_string(at_) + ": " + what);
   }
   void space() {
-    while (at_ < t_.size() && (t_[at_] == ' ' || t_[at_] == '\n' || t_[at_] == '\t' ||
-                               t_[at_] == '\r'))
+    while (at_ < t_.size() &&
+           (t_[at_] == ' ' || t_[at_] == '\n' || t_[at_] == '\t' || t_[at_] == '\r'))
       ++at_;
   }
   bool take(char c) {
@@ -120,14 +118,19 @@ class JsonReader {
       }
       if (++at_ >= t_.size()) break;
       const char e = t_[at_];
-      if (e == 'n') s += '\n';
-      else if (e == 't') s += '\t';
-      else if (e == 'r') s += '\r';
+      if (e == 'n')
+        s += '\n';
+      else if (e == 't')
+        s += '\t';
+      else if (e == 'r')
+        s += '\r';
       else if (e == 'u' && at_ + 4 < t_.size()) {
         s += static_cast<char>(std::stoi(t_.substr(at_ + 1, 4), nullptr, 16));
         at_ += 4;
-      } else if (e == '"' || e == '\\' || e == '/') s += e;
-      else fail("bad escape");
+      } else if (e == '"' || e == '\\' || e == '/')
+        s += e;
+      else
+        fail("bad escape");
     }
     if (at_ >= t_.size()) fail("unterminated string");
     ++at_;

@@ -14,11 +14,11 @@
 #include "behaviours/balance/strategy_classifier.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
-#include "robot/core/number_text.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/json_writer.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/quote.hpp"
 
 namespace stride::cli {

@@ -9,9 +9,9 @@
 #include "robot/core/error.hpp"
 #include "robot/core/json_writer.hpp"
 #include "robot/core/number_text.hpp"
+#include "robot/core/quote.hpp"
 #include "robot/model/dynamics/swing_leg_3d.hpp"
 #include "robot/model/dynamics/swing_leg_planar.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 namespace {

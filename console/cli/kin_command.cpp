@@ -10,16 +10,16 @@
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "robot/core/data_dir.hpp"
-#include "robot/core/number_text.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/json_writer.hpp"
+#include "robot/core/number_text.hpp"
+#include "robot/core/quote.hpp"
 #include "robot/model/kinematics/dls_ik.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/model/kinematics/nao_joint_map.hpp"
 #include "robot/model/kinematics/nao_leg_ik.hpp"
 #include "robot/model/urdf_loader.hpp"
 #include "robot/nao/nao_dimensions.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 namespace {

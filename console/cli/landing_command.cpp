@@ -9,8 +9,8 @@
 #include "console/experiments/landing_impact_study.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
-#include "robot/core/data_dir.hpp"
 #include "console/session/headless_run.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::cli {

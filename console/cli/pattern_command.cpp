@@ -16,10 +16,10 @@
 #include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
-#include "robot/core/number_text.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/output_file.hpp"
 #include "robot/core/quote.hpp"
 

@@ -22,15 +22,15 @@
 #include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
-#include "robot/core/number_text.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/json_writer.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/core/quote.hpp"
 #include "robot/runtime/parameter_override.hpp"
 #include "simulator/scene/scene_parser.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
@@ -270,10 +270,11 @@ int push_sweep_main(Args args, std::ostream& out, std::ostream& err) {
     for (double i : o.impulses)
       if (!(i >= 0)) throw UsageError("stride push-sweep: --impulses: expected values >= 0 N*s");
     if (o.impulses.size() * o.directions.size() > kMaxPushes)
-      throw UsageError("stride push-sweep: " + std::to_string(o.impulses.size()) +
-                       " impulses x " + std::to_string(o.directions.size()) +
+      throw UsageError("stride push-sweep: " + std::to_string(o.impulses.size()) + " impulses x " +
+                       std::to_string(o.directions.size()) +
                        " directions is more than one sweep runs (at most " +
-                       std::to_string(kMaxPushes) + " pushes); narrow the ranges or split the sweep");
+                       std::to_string(kMaxPushes) +
+                       " pushes); narrow the ranges or split the sweep");
     if (!csv.empty()) console::check_output_file("stride push-sweep: --csv", csv);
 
     std::vector<PushResult> results;

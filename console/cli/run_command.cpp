@@ -1,5 +1,6 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
-// [--video walk.apng|walk.mp4|dir ...] [--view v] [--fps N] [--no-overlay] [--set Module.field=value ...]
+// [--video walk.apng|walk.mp4|dir ...] [--view v] [--fps N] [--no-overlay] [--set
+// Module.field=value ...]
 // [--lola <socket> ...]`: a headless run, optionally with pictures and a movie, optionally with a
 // robot on LoLA (lola_run.hpp). Output paths are checked before the run; Ctrl-C ends the run
 // early and still writes its report. With `--ensemble N [--heading-spread rad]

@@ -14,9 +14,9 @@
 #include "console/experiments/swing_leg_ode_study.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/plot/gnuplot_plot.hpp"
-#include "robot/core/data_dir.hpp"
 #include "console/progress/progress_line.hpp"
 #include "console/session/headless_run.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/framework/enum_names.hpp"
 

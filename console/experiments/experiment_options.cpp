@@ -6,8 +6,8 @@
 #include <ostream>
 #include <sstream>
 
-#include "robot/core/data_dir.hpp"
 #include "console/output/output_paths.hpp"
+#include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::experiments {

@@ -4,8 +4,8 @@
 #include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
-#include "robot/model/physical_limits.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 

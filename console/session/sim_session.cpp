@@ -2,10 +2,10 @@
 
 #include "behaviours/module_catalogue.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 #include "robot/runtime/controller_schedule.hpp"
 #include "simulator/lola/lola_codec_link.hpp"
 #include "simulator/scene/scene_parser.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride::console {
 

@@ -1,8 +1,8 @@
 #include "robot/runtime/parameter_override.hpp"
 
 #include "robot/core/error.hpp"
-#include "robot/runtime/runtime.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/runtime/runtime.hpp"
 
 namespace stride {
 

@@ -5,9 +5,9 @@
 #include <utility>
 
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 #include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/recorded_config.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride {
 
@@ -303,7 +303,8 @@ void Runtime::set(std::string_view key, std::string_view text) {
   const std::string update = k.path.empty() ? std::string(text) : k.path + "=" + std::string(text);
   if (!k.representation) return set_parameters(k.name, update);
   auto it = by_name_.find(k.name);
-  if (it == by_name_.end()) throw Error("no representation " + quote(k.name) + " on the blackboard");
+  if (it == by_name_.end())
+    throw Error("no representation " + quote(k.name) + " on the blackboard");
   if (text == "unchanged") {
     if (!k.path.empty())
       throw Error("'unchanged' releases a whole representation: set representation:" + k.name +

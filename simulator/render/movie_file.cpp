@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "robot/core/error.hpp"
-#include "simulator/render/movie_encoders.hpp"
 #include "robot/core/quote.hpp"
+#include "simulator/render/movie_encoders.hpp"
 
 namespace stride::render {
 

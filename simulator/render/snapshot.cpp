@@ -4,12 +4,12 @@
 #include <filesystem>
 
 #include "robot/core/error.hpp"
+#include "robot/core/quote.hpp"
 #include "simulator/render/movie_file.hpp"
 #include "simulator/render/png_file.hpp"
 #include "simulator/render/text_overlay.hpp"
 #include "simulator/render/views.hpp"
 #include "simulator/simulation.hpp"
-#include "robot/core/quote.hpp"
 
 namespace stride::render {
 namespace {

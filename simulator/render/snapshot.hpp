@@ -1,6 +1,7 @@
 #pragma once
-// One picture of a simulation, and a video: a movie (animated PNG or MP4), numbered PNG pictures, or both, taken
-// every few physics steps. Pictures carry the time and a status line unless asked not to.
+// One picture of a simulation, and a video: a movie (animated PNG or MP4), numbered PNG pictures,
+// or both, taken every few physics steps. Pictures carry the time and a status line unless asked
+// not to.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -28,14 +29,13 @@ RgbaImage render_view(WorldRenderer& renderer, const sim::Simulation& sim, const
 void write_snapshot(WorldRenderer& renderer, const sim::Simulation& sim, const std::string& path,
                     const std::string& view, int robot = 0, bool overlay = true);
 
-
 class VideoRecorder {
  public:
   VideoRecorder();
   ~VideoRecorder();
-  // Starts recording into each destination: a movie file (*.apng, *.mp4: movie_file.hpp) or a folder of
-  // frame_000000.png, ... (created if missing; its parent must exist). Checks the view first;
-  // throws stride::Error and records nothing on any error.
+  // Starts recording into each destination: a movie file (*.apng, *.mp4: movie_file.hpp) or a
+  // folder of frame_000000.png, ... (created if missing; its parent must exist). Checks the view
+  // first; throws stride::Error and records nothing on any error.
   void start(const sim::Simulation& sim, const std::vector<std::string>& destinations,
              const std::string& view, std::uint64_t every_steps, int robot = 0,
              bool overlay = true);

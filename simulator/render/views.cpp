@@ -1,8 +1,8 @@
 #include "simulator/render/views.hpp"
 
 #include "robot/core/error.hpp"
-#include "simulator/simulation.hpp"
 #include "robot/core/quote.hpp"
+#include "simulator/simulation.hpp"
 
 namespace stride::render {
 namespace {

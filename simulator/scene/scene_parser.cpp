@@ -17,8 +17,8 @@
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
 #include "simulator/scene/scene_limits.hpp"
-#include "simulator/world/contact_softness.hpp"
 #include "simulator/scene/solver_names.hpp"
+#include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
 namespace {

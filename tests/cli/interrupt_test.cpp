@@ -12,7 +12,6 @@
 #include <sstream>
 #include <thread>
 
-
 #include "tests/cli/stride_process.hpp"
 #include "tests/json_reader.hpp"
 

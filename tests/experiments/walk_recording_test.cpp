@@ -23,13 +23,13 @@ namespace fs = std::filesystem;
 // hip strategy is switched on at 2 s by the scene itself.
 std::string scene_file() {
   const std::string robots = std::string(STRIDE_SOURCE_DIR) + "/scenes/robots/nao/";
-  const fs::path path = fs::temp_directory_path() /
-                        ("stride_walk_recording_" + std::to_string(::getpid()) + ".xml");
+  const fs::path path =
+      fs::temp_directory_path() / ("stride_walk_recording_" + std::to_string(::getpid()) + ".xml");
   std::ofstream(path) << R"(<scene name="timed_walk">
   <physics step="1ms" seed="1" iterations="20"/>
   <ground friction="0.8"/>
-  <robot name="nao" urdf=")" << robots << R"(nao.urdf" devices=")" << robots
-                      << R"(nao.devices.xml">
+  <robot name="nao" urdf=")"
+                      << robots << R"(nao.urdf" devices=")" << robots << R"(nao.devices.xml">
     <joints LHipPitch="-0.3" RHipPitch="-0.3" LKneePitch="0.6" RKneePitch="0.6"
             LAnklePitch="-0.3" RAnklePitch="-0.3" LShoulderPitch="1.5" RShoulderPitch="1.5"/>
     <controller>

@@ -6,10 +6,10 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
-#include "robot/framework/reflect.hpp"
-#include "tests/error_text.hpp"
 #include "robot/core/quote.hpp"
 #include "robot/framework/enum_names.hpp"
+#include "robot/framework/reflect.hpp"
+#include "tests/error_text.hpp"
 
 namespace stride {
 namespace {

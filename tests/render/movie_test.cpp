@@ -74,7 +74,8 @@ Decoded decode_apng(const std::string& path) {
     if (at + 12 + n > b.size()) return {};
     const auto* bytes = reinterpret_cast<const Bytef*>(b.data() + at + 4);
     if (crc32(crc32(0L, Z_NULL, 0), bytes, n + 4) != u32(at + 8 + n)) return {};
-    if (type == "IHDR") d.width = static_cast<int>(u32(at + 8)), d.height = static_cast<int>(u32(at + 12));
+    if (type == "IHDR")
+      d.width = static_cast<int>(u32(at + 8)), d.height = static_cast<int>(u32(at + 12));
     if (type == "acTL") declared = u32(at + 8);
     if (type == "fcTL") ++d.frames;
     at += 12 + n;
@@ -223,8 +224,9 @@ TEST(MovieFile, BadSizesAndPathsAreErrorsAndLeaveNoFile) {
   EXPECT_EQ(error_of([&] { MovieFile((dir / "x.avi").string(), 96, 64, 25); }),
             "movie '" + (dir / "x.avi").string() + "': expected a .mp4 or .apng file");
   if (!mp4_supported())
-    EXPECT_NE(error_of([&] { MovieFile((dir / "x.mp4").string(), 96, 64, 25); })
-                  .find("built without FFmpeg's libraries"),
+    EXPECT_NE(error_of([&] {
+                MovieFile((dir / "x.mp4").string(), 96, 64, 25);
+              }).find("built without FFmpeg's libraries"),
               std::string::npos);
 }
 

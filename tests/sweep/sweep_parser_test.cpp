@@ -121,8 +121,9 @@ TEST(SweepParser, RecordAndTallies) {
 
 TEST(SweepParser, PlotAxesNameTheirUnits) {
   const std::string tally = "<run seconds=\"1\"/><tally name=\"t\"><count name=\"n\"/></tally>\n";
-  const SweepSpec s = parse(tally + "<plot tally=\"t\" x=\"kd\" y=\"n\" x_label=\"K_d [s]\" "
-                                    "y_label=\"walks [-]\"/>");
+  const SweepSpec s = parse(tally +
+                            "<plot tally=\"t\" x=\"kd\" y=\"n\" x_label=\"K_d [s]\" "
+                            "y_label=\"walks [-]\"/>");
   ASSERT_EQ(s.plots.size(), 1u);
   EXPECT_EQ(s.plots[0].x_label, "K_d [s]");
   EXPECT_EQ(error(tally + "<plot tally=\"t\" x=\"kd\" y=\"n\" y_label=\"walks [-]\"/>"),

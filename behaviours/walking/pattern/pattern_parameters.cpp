@@ -8,8 +8,8 @@
 #include "behaviours/walking/pattern/pattern_parameter_list.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
-#include "robot/nao/nao_dimensions.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/nao/nao_dimensions.hpp"
 
 namespace stride::walking {
 
