@@ -16,14 +16,6 @@
 #include "robot/framework/reflect.hpp"
 #include "robot/hal/joint_id.hpp"
 
-namespace stride {
-template <>
-struct EnumNames<swing_leg::Controller> {
-  static constexpr std::string_view type_name = "SwingLegController";
-  static constexpr std::array<std::string_view, 2> names{"adaptive", "pd"};
-};
-}  // namespace stride
-
 namespace stride::swing_leg {
 
 using Leg5 = JointVector<5>;

@@ -55,7 +55,7 @@ std::vector<std::string> joint_names(LegModel m);
 namespace stride {
 template <>
 struct EnumNames<swing_leg::Controller> {
-  static constexpr std::string_view type_name = "Controller";
+  static constexpr std::string_view type_name = "SwingLegController";
   static constexpr std::array<std::string_view, 2> names{"adaptive", "pd"};
 };
 }  // namespace stride

@@ -19,9 +19,9 @@ expect_run 0 'impedance' "$stride" landing --seconds 0.4
 expect_run 0 'TorsoStateEstimator online' "$stride" experiment kalman --seeds 1 --jobs 1 \
   --out results --no-plots
 ls results/*.csv >/dev/null 2>&1 || { echo "FAIL: no CSV in results/"; failures=$((failures + 1)); }
-expect_run 0 'ok log.mismatches == 0' "$stride" --script "$src/tests/scripts/log_after_mr.con"
+expect_run 0 'ok log\.mismatches = 0' "$stride" --script "$src/tests/scripts/log_after_mr.con"
 [ -s after_mr.log ] || { echo "FAIL: no after_mr.log here"; failures=$((failures + 1)); }
-expect_run 0 'tally' "$stride" sweep "$src/tests/sweep/data/stand.sweep.xml" --jobs 1 --out sweep_out
+expect_run 0 'iterations +runs' "$stride" sweep "$src/tests/sweep/data/stand.sweep.xml" --jobs 1 --out sweep_out
 ls sweep_out/*.csv >/dev/null 2>&1 || { echo "FAIL: no CSV in sweep_out/"; failures=$((failures + 1)); }
 # A scene given by its shipped name runs from here, and a missing one says what was looked for.
 expect_run 0 'upright' "$stride" run scenes/nao_stand.xml --seconds 0.1
