@@ -13,11 +13,15 @@ endif()
 # The simulator, console, tests and benchmarks:
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
-# Optional: MP4 movies (Debian libavcodec-dev, libavformat-dev, libswscale-dev, libavutil-dev);
-# without them movies are written as animated PNG only.
-pkg_check_modules(FFMPEG IMPORTED_TARGET libavcodec libavformat libswscale libavutil)
-if(NOT FFMPEG_FOUND)
-  message(STATUS "FFmpeg's libraries not found: building without .mp4 movies (.apng only)")
+# Optional (STRIDE_MP4): MP4 movies (Debian libavcodec-dev, libavformat-dev, libswscale-dev,
+# libavutil-dev); without them movies are written as animated PNG only.
+if(STRIDE_MP4)
+  pkg_check_modules(FFMPEG IMPORTED_TARGET libavcodec libavformat libswscale libavutil)
+  if(NOT FFMPEG_FOUND)
+    message(STATUS "FFmpeg's libraries not found: building without .mp4 movies (.apng only)")
+  endif()
+else()
+  set(FFMPEG_FOUND FALSE)
 endif()
 find_package(PNG REQUIRED)
 find_library(READLINE_LIBRARY readline REQUIRED)

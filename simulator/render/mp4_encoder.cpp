@@ -24,7 +24,7 @@ struct Mp4Encoder final : MovieFile::Encoder {
   int width = 0, height = 0;
   std::string codec_name;
   AVFormatContext* format = nullptr;
-  AVCodecContext* codec = nullptr;
+  AVCodecContext* context = nullptr;
   AVStream* stream = nullptr;
   SwsContext* scale = nullptr;
   AVFrame* frame = nullptr;
@@ -46,7 +46,7 @@ struct Mp4Encoder final : MovieFile::Encoder {
     if (format && header_written && !closed) av_write_trailer(format);
     if (format && format->pb) avio_closep(&format->pb);
     avformat_free_context(format);
-    avcodec_free_context(&codec);
+    avcodec_free_context(&context);
     sws_freeContext(scale);
     av_frame_free(&frame);
     av_packet_free(&packet);
@@ -54,12 +54,12 @@ struct Mp4Encoder final : MovieFile::Encoder {
 
   // Sends one frame (or nullptr: flush) and writes every packet the encoder has ready.
   void encode(AVFrame* f) {
-    int rc = avcodec_send_frame(codec, f);
+    int rc = avcodec_send_frame(context, f);
     if (rc < 0) fail("encoding a frame", rc);
-    while ((rc = avcodec_receive_packet(codec, packet)) >= 0) {
+    while ((rc = avcodec_receive_packet(context, packet)) >= 0) {
       // Every frame lasts one frame period; without it the MP4's edit list drops the last one.
       if (packet->duration == 0) packet->duration = 1;
-      av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
+      av_packet_rescale_ts(packet, context->time_base, stream->time_base);
       packet->stream_index = stream->index;
       rc = av_interleaved_write_frame(format, packet);
       if (rc < 0) fail("writing", rc);
@@ -93,32 +93,38 @@ std::unique_ptr<MovieFile::Encoder> open_mp4(const std::string& part, int width,
   e.part = part;
   int rc = avformat_alloc_output_context2(&e.format, nullptr, "mp4", e.part.c_str());
   if (rc < 0 || !e.format) e.fail("no MP4 muxer", rc);
-  e.codec = avcodec_alloc_context3(codec);
+  e.context = avcodec_alloc_context3(codec);
   e.stream = avformat_new_stream(e.format, nullptr);
   e.frame = av_frame_alloc();
   e.packet = av_packet_alloc();
-  if (!e.codec || !e.stream || !e.frame || !e.packet) e.fail("out of memory");
+  if (!e.context || !e.stream || !e.frame || !e.packet) e.fail("out of memory");
   // Whole frames per second as a rational: 25 -> 1/25; 29.97 -> 100/2997.
   const AVRational rate = av_d2q(fps, 100000);
-  e.codec->width = width;
-  e.codec->height = height;
-  e.codec->time_base = av_inv_q(rate);
-  e.codec->framerate = rate;
-  e.codec->pix_fmt = AV_PIX_FMT_YUV420P;
-  e.codec->gop_size = 50;
-  e.codec->thread_count = 1;  // one thread: the same bytes on every machine
-  if (e.format->oformat->flags & AVFMT_GLOBALHEADER) e.codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  e.context->width = width;
+  e.context->height = height;
+  e.context->time_base = av_inv_q(rate);
+  e.context->framerate = rate;
+  e.context->pix_fmt = AV_PIX_FMT_YUV420P;
+  e.context->gop_size = 50;
+  e.context->thread_count = 1;  // one thread: the same bytes on every machine
+  if (e.format->oformat->flags & AVFMT_GLOBALHEADER)
+    e.context->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  // A key frame every 50 frames (2 s at 25 frames/s) and nowhere else: no scene-cut detection, so
+  // seeking and file sizes do not depend on what the picture shows.
+  e.context->keyint_min = e.context->gop_size;
   if (e.codec_name == "h264") {
-    av_opt_set(e.codec->priv_data, "preset", "veryfast", 0);
-    av_opt_set(e.codec->priv_data, "crf", "23", 0);
+    av_opt_set(e.context->priv_data, "preset", "veryfast", 0);
+    av_opt_set(e.context->priv_data, "crf", "23", 0);
+    av_opt_set(e.context->priv_data, "x264-params", "scenecut=0", 0);
   } else {
-    e.codec->bit_rate = 4'000'000;
+    e.context->bit_rate = 4'000'000;
+    av_opt_set_int(e.context->priv_data, "sc_threshold", 1'000'000'000, 0);
   }
-  rc = avcodec_open2(e.codec, codec, nullptr);
+  rc = avcodec_open2(e.context, codec, nullptr);
   if (rc < 0) e.fail("cannot open the " + e.codec_name + " encoder", rc);
-  rc = avcodec_parameters_from_context(e.stream->codecpar, e.codec);
+  rc = avcodec_parameters_from_context(e.stream->codecpar, e.context);
   if (rc < 0) e.fail("stream parameters", rc);
-  e.stream->time_base = e.codec->time_base;
+  e.stream->time_base = e.context->time_base;
   rc = avio_open(&e.format->pb, e.part.c_str(), AVIO_FLAG_WRITE);
   if (rc < 0) e.fail("cannot open for writing", rc);
   rc = avformat_write_header(e.format, nullptr);
