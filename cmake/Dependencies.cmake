@@ -7,6 +7,7 @@ find_package(Threads REQUIRED)
 pkg_check_modules(URDFDOM REQUIRED IMPORTED_TARGET urdfdom)
 find_package(msgpack REQUIRED CONFIG)  # Debian's msgpack-cxx: target msgpackc-cxx
 find_package(ZLIB REQUIRED)  # log frame checksums
+find_package(OpenSSL REQUIRED)  # libcrypto: HMAC-SHA256 and SHA-256 for the debug server
 if(STRIDE_ROBOT_ONLY)
   return()
 endif()

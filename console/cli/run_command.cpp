@@ -1,11 +1,11 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
 // [--video walk.apng|walk.mp4|dir ...] [--view v] [--fps N] [--no-overlay] [--set
-// Module.field=value ...]
-// [--lola <socket> ...]`: a headless run, optionally with pictures and a movie, optionally with a
-// robot on LoLA (lola_run.hpp). Output paths are checked before the run; Ctrl-C ends the run
-// early and still writes its report. With `--ensemble N [--heading-spread rad]
-// [--position-spread m] [--jobs N]`: N perturbed starts (seeds N.. on) and the spread of their
-// walks instead.
+// Module.field=value ...] [--lola <socket> ...] [--debug addr:port [--token-file f]
+// [--log-dir d]]`: a headless run, optionally with pictures and a movie, optionally with a robot
+// on LoLA (lola_run.hpp), or served to debug consoles in real time (debug_run.hpp). Output paths
+// are checked before the run; Ctrl-C ends the run early and still writes its report. With
+// `--ensemble N [--heading-spread rad] [--position-spread m] [--jobs N]`: N perturbed starts
+// (seeds N.. on) and the spread of their walks instead.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -14,6 +14,7 @@
 #include <ostream>
 
 #include "console/cli/arguments.hpp"
+#include "console/cli/debug_run.hpp"
 #include "console/cli/ensemble_arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/lola_run.hpp"
@@ -86,10 +87,16 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       overrides.push_back(parse_parameter_override(set, "stride run: --set"));
     const std::string view = a.text_or("--view", "");
     const double fps = a.number_or("--fps", 25.0);
+    DebugRun debug{a.text_or("--debug", ""), a.text_or("--token-file", ""),
+                   a.text_or("--log-dir", "."),
+                   a.has("--seconds") ? std::optional<double>(seconds) : std::nullopt};
     if (!(fps >= 1 && fps <= 1000))
       throw UsageError("stride run: --fps: expected 1 to 1000 frames/s");
     const LolaRunOptions lola = read_lola_options(a);
     a.finish();
+    if (!debug.address.empty() && lola.any())
+      throw UsageError(
+          "stride run: --debug: serve the LoLA robot with 'stride robot --debug' instead");
     check_outputs(report, log, snapshot, videos);
 
     sim::SceneDescription description = sim::parse_scene_file(scene);
@@ -114,7 +121,10 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     console::InterruptFlag interrupt;
     const auto t0 = std::chrono::steady_clock::now();
     bool interrupted = false;
-    {
+    double requested = seconds;
+    if (!debug.address.empty()) {
+      requested = serve_simulation(session, debug, out);  // until --seconds or a signal
+    } else {
       console::ProgressLine progress(
           err,
           {.label = "run", .total = seconds, .unit = "s", .decimals = 1, .rate_as_speedup = true},
@@ -123,7 +133,7 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
       if (recorder.active()) run.after_step = [&] { recorder.after_step(renderer, sim); };
       interrupted = console::run_headless(sim, run);
     }
-    sim::RunTiming timing{.interrupted = interrupted, .requested_time = seconds};
+    sim::RunTiming timing{.interrupted = interrupted, .requested_time = requested};
     timing.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (server) timing.lola = &server->report();
     out << sim::run_report_text(sim, timing);

@@ -34,10 +34,13 @@ const std::vector<Subcommand>& subcommands() {
       {"run",
        "run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png] "
        "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] [--lola <socket> "
-       "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] | run <scene> "
+       "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] [--debug "
+       "addr:port [--token-file f] [--log-dir d]] | run <scene> "
        "--ensemble N [--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] "
        "[--jobs N]: headless simulation (--lola: that robot is served over a LoLA socket); "
-       "--ensemble: N perturbed starts, the walk's spread and fall count",
+       "--debug: served to consoles in real time until --seconds or Ctrl-C; --ensemble: N "
+       "perturbed "
+       "starts, the walk's spread and fall count",
        run_main},
       {"robot", kRobotUsage, robot_main},
       {"lola", kLolaUsage, lola_main},

@@ -135,6 +135,21 @@ void check_expect(const Words& a) {
 void check_sweep(const Words& a) {
   parse_sweep_arguments(a);
 }
+void check_endpoint(const std::string& text, const char* what) {
+  const auto colon = text.rfind(':');
+  parse_integer(colon == std::string::npos ? text : text.substr(colon + 1),
+                std::string(what) + " port", 0, 65535);
+}
+void check_connect(const Words& a) {
+  check_endpoint(a[0], "connect");
+}
+void check_serve(const Words& a) {
+  if (a[0] == "stop") {
+    if (a.size() != 1) throw Error("serve stop takes no arguments");
+    return;
+  }
+  check_endpoint(a[0], "serve");
+}
 void check_wait(const Words& a) {
   if (a[0] != "until") throw Error("expected 'until', got " + quote(a[0]));
   if (a.size() == 5) throw Error("give 'timeout <seconds>' after the value");
@@ -199,10 +214,21 @@ const std::vector<CommandSpec>& command_table() {
        nullptr},
       {"push", "push <body> <fx> <fy> <fz> <seconds>", "apply a force (N) to a link", 5, 5,
        check_push},
-      {"robot", "robot [<name>|?]",
+      {"robot", "robot [<name>|<host:port>|?]",
        "select the robot that robot keys, framework keys, mr, dr, log, push, mv, sn and the "
-       "built-in views act on; without a name or with ? list the robots",
+       "built-in views act on (a scene's robot or a connection); without a name or with ? list "
+       "them",
        0, 1, nullptr},
+      {"connect", "connect <host:port> [token]",
+       "act on a robot's debug server (token: or STRIDE_TOKEN); simulation commands then say "
+       "they need a simulation",
+       1, 2, check_connect},
+      {"disconnect", "disconnect [host:port]",
+       "close the connection to a robot and act on the local simulation again", 0, 1, nullptr},
+      {"serve", "serve <[host:]port> [token-file] | serve stop",
+       "serve the selected robot's controller to other consoles (loopback unless a token is "
+       "given, by file or STRIDE_TOKEN)",
+       1, 2, check_serve},
       {"mv", "mv <x> <y> <z> [yaw]", "move the robot (m, rad)", 3, 4, check_mv},
       {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
       {"snapshot", "snapshot <file.png> [view]",

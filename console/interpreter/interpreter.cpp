@@ -23,7 +23,7 @@ namespace {
 constexpr std::size_t kMaxScriptDepth = 16;
 }  // namespace
 
-Interpreter::Interpreter(Target& target, std::ostream& out) : target_(target), out_(out) {}
+Interpreter::Interpreter(LocalTarget& local, std::ostream& out) : local_(local), out_(out) {}
 
 Interpreter::~Interpreter() {
   try {
@@ -37,6 +37,8 @@ void Interpreter::execute(std::string_view line) {
   const Command c = parse_command(line);
   try {
     dispatch(c);
+  } catch (const debug::ConnectionLost& e) {
+    lost_connection(e.what());
   } catch (const std::bad_alloc&) {  // a command asked for more than the machine has
     throw Error(c.name + ": out of memory");
   }
@@ -96,10 +98,11 @@ std::string Interpreter::resolve(const std::string& path) const {
 }
 
 void Interpreter::load(const std::string& path) {
+  simulation("load");
   const std::string resolved = find_input(resolve(path));  // a shipped scene from anywhere
   finish();
-  target_.load(resolved);
-  out_ << "loaded " << target_.name() << "\n";
+  local_.load(resolved);
+  out_ << "loaded " << local_.name() << "\n";
   const fs::path script = fs::path(resolved).replace_extension(".con");
   if (fs::exists(script)) {
     out_ << "running " << script.string() << "\n";
@@ -108,8 +111,10 @@ void Interpreter::load(const std::string& path) {
 }
 
 std::uint64_t Interpreter::steps_for(double seconds) const {
-  const double dt = target_.step_seconds();
-  if (!(dt > 0)) throw Error("no scene loaded (use: load <scene.xml>)");
+  const double dt = remote_ ? remote_->step_seconds() : local_.step_seconds();
+  if (!(dt > 0))
+    throw Error(remote_ ? remote_->name() + " has no control period yet (its loop has not run)"
+                        : "no scene loaded (use: load <scene.xml>)");
   if (const std::string p = limits::duration_problem(seconds); !p.empty())
     throw Error("seconds: " + p);
   return static_cast<std::uint64_t>(std::llround(seconds / dt));
@@ -118,11 +123,11 @@ std::uint64_t Interpreter::steps_for(double seconds) const {
 void Interpreter::print_watches() {
   if (watch_keys_.empty() || ++steps_since_watch_ < watch_every_) return;
   steps_since_watch_ = 0;
-  out_ << "t=" << target_.get("sim.time");
+  out_ << "t=" << target().time_text();
   for (const auto& k : watch_keys_) {
     std::string v;
     try {
-      v = target_.get(k);
+      v = value(k);
     } catch (const Error& e) {
       v = "?";
     }
@@ -133,11 +138,11 @@ void Interpreter::print_watches() {
 
 void Interpreter::record_plot_row() {
   if (plot_keys_.empty()) return;
-  std::vector<double> row{std::stod(target_.get("sim.time"))};
+  std::vector<double> row{std::stod(target().time_text())};
   for (const auto& k : plot_keys_) {
     double v = std::nan("");
     try {
-      const std::string text = target_.get(k);
+      const std::string text = value(k);
       v = text == "true" ? 1.0 : text == "false" ? 0.0 : parse_number(text, k);
     } catch (const Error&) {
     }
@@ -149,13 +154,14 @@ void Interpreter::record_plot_row() {
 bool Interpreter::after_step() {
   print_watches();
   record_plot_row();
-  DebugOutput debug = target_.take_debug_output();
+  RobotTarget& robot = target();
+  DebugOutput debug = robot.take_debug_output();
   if (!debug.lines.empty()) {
-    const std::string t = target_.get("sim.time");
+    const std::string t = robot.time_text();
     for (const auto& line : debug.lines) out_ << "t=" << t << " " << line << "\n";
   }
   if (debug.stop.empty()) return true;
-  out_ << "paused at t=" << target_.get("sim.time") << ": " << debug.stop << "\n";
+  out_ << "paused at t=" << robot.time_text() << ": " << debug.stop << "\n";
   return false;
 }
 
@@ -164,26 +170,45 @@ void Interpreter::start_pacing() {
   paced_steps_ = 0;
 }
 
-std::chrono::steady_clock::time_point Interpreter::step_due() const {
+std::chrono::steady_clock::time_point Interpreter::step_due() {
   return pace_start_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(paced_steps_ * target_.step_seconds()));
+                           std::chrono::duration<double>(paced_steps_ * target().step_seconds()));
 }
 
-bool Interpreter::advance(std::uint64_t steps, const std::function<bool()>& until) {
-  if (!target_.loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
+void Interpreter::observe(const std::vector<std::string>& until_keys) {
+  std::vector<std::string> observed = watch_keys_;
+  observed.insert(observed.end(), plot_keys_.begin(), plot_keys_.end());
+  observed.insert(observed.end(), until_keys.begin(), until_keys.end());
+  target().observe(observed);
+}
+
+void Interpreter::report_dropped(std::uint64_t before) {
+  RobotTarget& robot = target();
+  if (const auto lost = robot.samples_dropped() - before; lost > 0)
+    out_ << robot.name() << " dropped " << lost
+         << " stream sample(s): this console read too slowly\n";
+}
+
+bool Interpreter::advance(std::uint64_t steps, const std::function<bool()>& until,
+                          const std::vector<std::string>& until_keys) {
+  RobotTarget& robot = target();
+  if (!robot.loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
+  observe(until_keys);
   start_pacing();
+  const std::uint64_t dropped_before = robot.samples_dropped();
   bool reached = false;
-  target_.advance(steps, [&] {
+  robot.advance(steps, [&] {
     ++paced_steps_;
     if (!after_step()) return false;
     if (until && until()) return !(reached = true);
     if (interrupt_ && interrupt_->exchange(false)) {
-      out_ << "paused at t=" << target_.get("sim.time") << "\n";
+      out_ << "paused at t=" << robot.time_text() << "\n";
       return false;
     }
     if (realtime_) std::this_thread::sleep_until(step_due());
     return true;
   });
+  report_dropped(dropped_before);
   return reached;
 }
 
@@ -194,7 +219,10 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
   const auto start = Clock::now();
   Clock::duration wait = Clock::duration::zero();
   try {
-    target_.advance(std::numeric_limits<std::uint64_t>::max(), [&] {
+    RobotTarget& robot = target();
+    observe({});
+    const std::uint64_t dropped_before = robot.samples_dropped();
+    robot.advance(std::numeric_limits<std::uint64_t>::max(), [&] {
       ++paced_steps_;
       if (!after_step()) return running_ = false;
       const auto now = Clock::now();
@@ -204,6 +232,10 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
       }
       return now - start < budget;
     });
+    report_dropped(dropped_before);
+  } catch (const debug::ConnectionLost& e) {
+    running_ = false;
+    lost_connection(e.what());
   } catch (...) {
     running_ = false;  // a failing step ends the run; the REPL reports the error
     throw;
@@ -214,7 +246,7 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
 void Interpreter::pause_run() {
   if (!running_) return;
   running_ = false;
-  out_ << "paused at t=" << target_.get("sim.time") << "\n";
+  out_ << "paused at t=" << target().time_text() << "\n";
 }
 
 void Interpreter::refuse_while_running(const std::string& command) const {
@@ -230,22 +262,23 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "load" || n == "reset") pause_run();  // a new world starts paused
   if (n == "load") return load(a[0]);
   if (n == "reset") {
-    target_.reset();
-    out_ << "reset " << target_.name() << "\n";
+    simulation(n).reset();
+    out_ << "reset " << local_.name() << "\n";
     return;
   }
   if (n == "run" || n == "step" || n == "wait") refuse_while_running(n);
   if (n == "run") {
     if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));
     if (!interrupt_) throw Error("run: give the seconds to run in a script");
-    if (!target_.loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
+    if (!target().loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
     running_ = true;
     start_pacing();
-    out_ << "running from t=" << target_.get("sim.time")
+    out_ << "running from t=" << target().time_text()
          << " (commands apply between frames; pause or Ctrl-C stops)\n";
     return;
   }
   if (n == "step") {
+    simulation(n);
     advance(
         a.empty() ? 1 : static_cast<std::uint64_t>(parse_integer(a[0], "frames", 1, 1000000000)),
         nullptr);
@@ -253,7 +286,7 @@ void Interpreter::dispatch(const Command& c) {
   }
   if (n == "pause") {
     if (running_) return pause_run();
-    out_ << "paused at t=" << target_.get("sim.time") << "\n";
+    out_ << "paused at t=" << target().time_text() << "\n";
     return;
   }
   if (n == "realtime") {
@@ -265,7 +298,7 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "set") {
     std::string fields;
     for (std::size_t i = 1; i < a.size(); ++i) fields += (i > 1 ? " " : "") + a[i];
-    target_.set(a[0], fields);
+    target().set(a[0], fields);
     return;
   }
   if (n == "mr") return module_request(a);
@@ -275,20 +308,26 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "log") return log(a);
   if (n == "report") return report(a);
   if (n == "push") {
-    target_.push(a[0], parse_number(a[1], "fx"), parse_number(a[2], "fy"), parse_number(a[3], "fz"),
-                 parse_number(a[4], "seconds"));
+    simulation(n).push(a[0], parse_number(a[1], "fx"), parse_number(a[2], "fy"),
+                       parse_number(a[3], "fz"), parse_number(a[4], "seconds"));
     return;
   }
-  if (n == "robot") return select_robot(a);
+  // The background run belongs to the target it was started on.
+  if (n == "connect" || n == "disconnect") pause_run();
+  if (n == "robot") return robot_command(c);
+  if (n == "connect") return connect(a);
+  if (n == "disconnect") return disconnect(a);
+  if (n == "serve") return serve(a);
   if (n == "mv") {
-    target_.move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"), parse_number(a[2], "z"),
-                       a.size() > 3 ? parse_number(a[3], "yaw")
-                                    : parse_number(target_.get("robot.torso.yaw"), "yaw"));
+    simulation(n).move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"),
+                             parse_number(a[2], "z"),
+                             a.size() > 3 ? parse_number(a[3], "yaw")
+                                          : parse_number(local_.get("robot.torso.yaw"), "yaw"));
     return;
   }
-  if (n == "sn") return target_.sensor_switch(a[0], parse_on_off(a[1], a[0]));
+  if (n == "sn") return simulation(n).sensor_switch(a[0], parse_on_off(a[1], a[0]));
   if (n == "snapshot") {
-    target_.snapshot(a[0], a.size() > 1 ? a[1] : "");
+    simulation(n).snapshot(a[0], a.size() > 1 ? a[1] : "");
     out_ << "wrote " << a[0] << "\n";
     return;
   }

@@ -1,11 +1,15 @@
 #pragma once
-// Executes parsed console commands against a Target. The interpreter keeps only console-side state
-// (watches, plot recording, realtime pacing, the script stack); everything else goes through the
-// Target, so the same commands work locally and remotely.
+// Executes parsed console commands. Robot-side commands act on the current RobotTarget: the local
+// simulation's selected robot, or a robot reached with `connect`; simulation-only commands act on
+// the local simulation and say so in one line while a remote robot is current. The interpreter
+// keeps only console-side state (targets, watches, plot recording, realtime pacing, the script
+// stack), so the same commands and scripts work locally and remotely.
 #include <atomic>
 #include <chrono>
 #include <functional>
 #include <iosfwd>
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,13 +17,14 @@
 #include "console/interpreter/command_parser.hpp"
 #include "console/interpreter/sweep_command.hpp"
 #include "console/plot/gnuplot_plot.hpp"
-#include "console/target/target.hpp"
+#include "console/target/local_target.hpp"
+#include "console/target/remote_target.hpp"
 
 namespace stride::console {
 
 class Interpreter {
  public:
-  Interpreter(Target& target, std::ostream& out);
+  Interpreter(LocalTarget& local, std::ostream& out);
   ~Interpreter();
 
   // One line; on failure throws stride::Error with a one-line message (nothing half-applied).
@@ -44,28 +49,47 @@ class Interpreter {
   std::chrono::steady_clock::duration run_slice(std::chrono::steady_clock::duration budget);
   // Ctrl-C during a background run.
   void pause_run();
-  Target& target() { return target_; }
+  // The robot commands act on now: a connected remote robot, or the local simulation's.
+  RobotTarget& target();
+  LocalTarget& local() { return local_; }
+  // What `robot` takes: the scene's robots and the connections.
+  std::vector<std::string> robot_names();
+  // Call while waiting for input: keeps connections alive, serves `serve` clients when paused.
+  void idle();
 
  private:
   void dispatch(const Command& c);
+  void robot_command(const Command& c);
+  // The local simulation for `command`; one line saying why not while a remote robot is current.
+  SimulationTarget& simulation(const std::string& command);
+  // A key's value: sweep.* from the last sweep, log.* from the console's log player, else target.
+  std::string value(const std::string& key);
+  void connect(const std::vector<std::string>& a);
+  void disconnect(const std::vector<std::string>& a);
+  void serve(const std::vector<std::string>& a);
+  void lost_connection(const std::string& why);
   void load(const std::string& path);
   std::string resolve(const std::string& path) const;  // relative to the running script first
   // Advances up to `steps`; watches, plots, debug output, realtime and interrupts apply. `until`
-  // (may be null) stops the run when it returns true. Returns true if `until` became true.
-  bool advance(std::uint64_t steps, const std::function<bool()>& until);
+  // (may be null) stops the run when it returns true; `until_keys` are the keys it reads (a
+  // remote robot streams them). Returns true if `until` became true.
+  bool advance(std::uint64_t steps, const std::function<bool()>& until,
+               const std::vector<std::string>& until_keys = {});
+  // The keys read after every step (watch, plot, until), for the target to stream.
+  void observe(const std::vector<std::string>& until_keys);
   // Per step: watches, plots, debug output. False when a debug request asks to pause.
   bool after_step();
   void print_watches();
   void record_plot_row();
   void start_pacing();  // realtime pacing counts from now
-  std::chrono::steady_clock::time_point step_due() const;
+  std::chrono::steady_clock::time_point step_due();
   void refuse_while_running(const std::string& command) const;
+  void report_dropped(std::uint64_t before);  // stream samples lost since `before`
   std::uint64_t steps_for(double seconds) const;
 
   void help(const std::vector<std::string>& a);
   void get(const std::vector<std::string>& a);
   void module_request(const std::vector<std::string>& a);
-  void select_robot(const std::vector<std::string>& a);
   void debug_request(const std::vector<std::string>& a);
   void watch(const std::vector<std::string>& a);
   void plot(const std::vector<std::string>& a);
@@ -74,10 +98,11 @@ class Interpreter {
   void video(const std::vector<std::string>& a);
   void expect(const std::vector<std::string>& a);
   void wait_until(const std::vector<std::string>& a);
-  // A key's value: sweep.* keys from the last sweep, every other one from the target.
-  std::string value(const std::string& key);
 
-  Target& target_;
+  LocalTarget& local_;
+  std::map<std::string, std::unique_ptr<RemoteTarget>> remotes_;  // by host:port
+  RemoteTarget* remote_ = nullptr;     // current, or null: the local simulation
+  RobotTarget* log_target_ = nullptr;  // where log_path_ was recorded (null: a file here)
   std::ostream& out_;
   std::atomic<bool>* interrupt_ = nullptr;
   bool quit_ = false;

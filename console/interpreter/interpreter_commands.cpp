@@ -1,5 +1,5 @@
 // The commands of Interpreter that need more than one line: help, get, mr, dr, watch, plot, log,
-// report, expect, wait until.
+// report, video, expect, wait until.
 #include <algorithm>
 #include <cmath>
 #include <ostream>
@@ -21,22 +21,19 @@ void Interpreter::help(const std::vector<std::string>& a) {
 
 void Interpreter::get(const std::vector<std::string>& a) {
   if (a.size() == 2) {
-    const std::string text = describe_text(target_.type_of(a[0]));
+    const std::string text = describe_text(target().type_of(a[0]));
     out_ << text << (text.ends_with('\n') ? "" : "\n");
     return;
   }
   out_ << value(a[0]) << "\n";
 }
 
-std::string Interpreter::value(const std::string& key) {
-  return key.starts_with("sweep.") ? sweep_.value(key) : target_.get(key);
-}
-
 void Interpreter::module_request(const std::vector<std::string>& a) {
+  RobotTarget& robot = target();
   auto line = [&](const std::string& rep) {
-    const std::string by = target_.provider_of(rep);
+    const std::string by = robot.provider_of(rep);
     out_ << rep << ": " << (by.empty() ? "(built in)" : by);
-    const auto options = target_.providers_available(rep);
+    const auto options = robot.providers_available(rep);
     if (!options.empty()) {
       out_ << "  available:";
       for (const auto& m : options) out_ << " " << m;
@@ -44,32 +41,22 @@ void Interpreter::module_request(const std::vector<std::string>& a) {
     out_ << "\n";
   };
   if (a[0] == "?") {
-    for (const auto& rep : target_.representations()) line(rep);
+    for (const auto& rep : robot.representations()) line(rep);
     return;
   }
   if (a.size() == 1 || a[1] == "?") return line(a[0]);
-  target_.swap_provider(a[0], a[1]);
-  out_ << a[0] << " <- " << target_.provider_of(a[0]) << "\n";
-}
-
-void Interpreter::select_robot(const std::vector<std::string>& a) {
-  if (a.empty() || a[0] == "?") {
-    const std::string selected = target_.selected_robot();
-    for (const auto& name : target_.robot_names())
-      out_ << (name == selected ? "* " : "  ") << name << "\n";
-    return;
-  }
-  target_.select_robot(a[0]);
+  robot.swap_provider(a[0], a[1]);
+  out_ << a[0] << " <- " << robot.provider_of(a[0]) << "\n";
 }
 
 void Interpreter::debug_request(const std::vector<std::string>& a) {
   if (a[0] == "?") {
-    const auto all = target_.debug_requests();
+    const auto all = target().debug_requests();
     if (all.empty()) out_ << "(no debug requests)\n";
     for (const auto& [name, state] : all) out_ << name << " " << debug_switch_name(state) << "\n";
     return;
   }
-  target_.set_debug_request(a[0], parse_debug_switch(a[1]));
+  target().set_debug_request(a[0], parse_debug_switch(a[1]));
 }
 
 void Interpreter::watch(const std::vector<std::string>& a) {
@@ -83,7 +70,7 @@ void Interpreter::watch(const std::vector<std::string>& a) {
     every = static_cast<std::uint64_t>(parse_integer(a.back(), "every", 1, 1000000000));
     keys.resize(keys.size() - 2);
   }
-  for (const auto& k : keys) target_.get(k);  // unknown keys fail now, not while running
+  for (const auto& k : keys) value(k);  // unknown keys fail now, not while running
   watch_keys_ = std::move(keys);
   watch_every_ = every;
   steps_since_watch_ = 0;
@@ -101,7 +88,7 @@ void Interpreter::plot(const std::vector<std::string>& a) {
     file = a.back();
     keys.resize(keys.size() - 2);
   }
-  for (const auto& k : keys) target_.get(k);
+  for (const auto& k : keys) value(k);
   finish();
   plot_keys_ = std::move(keys);
   plot_file_ = file;
@@ -127,7 +114,7 @@ void Interpreter::finish() {
   spec.x_column = "t";
   // One panel per unit, in the order the keys first name them: no axis mixes units.
   for (const auto& k : keys) {
-    const std::string unit = unit_of_key(target_, k);
+    const std::string unit = unit_of_key(target(), k);
     const std::string label = "[" + (unit.empty() ? std::string("-") : unit) + "]";
     auto panel = std::find_if(spec.panels.begin(), spec.panels.end(),
                               [&](const plot::Panel& p) { return p.y_label == label; });
@@ -146,32 +133,33 @@ void Interpreter::finish() {
 void Interpreter::log(const std::vector<std::string>& a) {
   const std::string& what = a[0];
   if (what == "start") {
-    target_.log_start(a[1]);
+    target().log_start(a[1]);
     log_path_ = a[1];
+    log_target_ = &target();
     out_ << "logging to " << a[1] << "\n";
   } else if (what == "stop") {
-    target_.log_stop();
-  } else if (what == "load") {
-    out_ << a[1] << ": " << target_.log_load(resolve(a[1])) << "\n";
+    target().log_stop();
+  } else if (what == "load") {  // the console's own log player, whatever the target
+    out_ << a[1] << ": " << local_.log_load(resolve(a[1])) << "\n";
     log_path_ = resolve(a[1]);
+    log_target_ = nullptr;
   } else if (what == "save") {
-    // Logs are flushed every frame, so a copy holds every complete frame even while recording.
     if (log_path_.empty()) throw Error("log save: no log recorded or loaded yet");
-    copy_file_checked(log_path_, a[1]);
-    out_ << "saved " << log_path_ << " as " << a[1] << "\n";
+    out_ << (log_target_ ? *log_target_ : local_).log_save(log_path_, a[1]) << "\n";
   } else if (what == "goto") {
-    const auto skipped = target_.log_goto(
-        static_cast<std::size_t>(parse_integer(a[1], "frame", 0, 1000000000000LL)));
+    const auto skipped =
+        simulation("log goto")
+            .log_goto(static_cast<std::size_t>(parse_integer(a[1], "frame", 0, 1000000000000LL)));
     out_ << "frame " << a[1] << " on the blackboard";
     if (!skipped.empty()) out_ << " (" << skipped.size() << " representation(s) skipped)";
     out_ << "\n";
   } else if (what == "export") {
-    target_.log_export(a[1], {a.begin() + 2, a.end()});
+    local_.log_export(a[1], {a.begin() + 2, a.end()});
     out_ << "wrote " << a[1] << "\n";
   } else if (what == "info") {
-    for (const auto& line : target_.log_info()) out_ << line << "\n";
+    for (const auto& line : local_.log_info()) out_ << line << "\n";
   } else if (what == "replay") {
-    const ReplaySummary r = target_.log_replay();
+    const ReplaySummary r = simulation("log replay").log_replay();
     out_ << "replayed " << r.frames << " frames, compared " << r.compared
          << " representations: " << r.mismatch_count << " mismatch(es)";
     if (r.stopped) out_ << " (stopped before damaged frame " << r.stopped_at << ")";
@@ -182,21 +170,22 @@ void Interpreter::log(const std::vector<std::string>& a) {
 
 void Interpreter::report(const std::vector<std::string>& a) {
   if (a.empty()) {
-    out_ << target_.report_text();
+    out_ << target().report_text();
     return;
   }
-  write_file(a[0], target_.report_json());
+  write_file(a[0], target().report_json());
   out_ << "wrote " << a[0] << "\n";
 }
 
 void Interpreter::video(const std::vector<std::string>& a) {
   if (a[0] == "stop") {
-    out_ << "video: " << target_.video_stop() << " frames\n";
+    out_ << "video: " << simulation("video").video_stop() << " frames\n";
     return;
   }
   const VideoStart v = parse_video_start(a);
-  const double steps = 1.0 / (static_cast<double>(v.fps) * target_.step_seconds());
-  target_.video_start(v.dir, v.view, std::max<std::uint64_t>(1, std::llround(steps)));
+  SimulationTarget& sim = simulation("video");
+  const double steps = 1.0 / (static_cast<double>(v.fps) * local_.step_seconds());
+  sim.video_start(v.dir, v.view, std::max<std::uint64_t>(1, std::llround(steps)));
   if (render::is_movie_path(v.dir))
     out_ << "video: movie " << v.dir << " at " << v.fps << " fps while running\n";
   else
@@ -222,14 +211,14 @@ void Interpreter::wait_until(const std::vector<std::string>& a) {
   const Op op = parse_op(a[2]);
   const double timeout = a.size() == 6 ? parse_number(a[5], "timeout") : 10.0;
   const double tolerance = op == Op::Near ? 1e-3 : 1e-12;
-  auto holds = [&] { return compare(target_.get(a[1]), op, a[3], tolerance); };
-  if (holds() || advance(steps_for(timeout), holds)) {
-    out_ << "reached at t=" << target_.get("sim.time") << "\n";
+  auto holds = [&] { return compare(value(a[1]), op, a[3], tolerance); };
+  if (holds() || advance(steps_for(timeout), holds, {a[1]})) {
+    out_ << "reached at t=" << target().time_text() << "\n";
     return;
   }
   const std::string limit = a.size() == 6 ? a[5] : "10";
   throw Error("wait: " + a[1] + " " + a[2] + " " + a[3] + " not reached within " + limit +
-              " s (value " + target_.get(a[1]) + ")");
+              " s (value " + value(a[1]) + ")");
 }
 
 }  // namespace stride::console

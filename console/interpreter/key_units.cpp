@@ -1,6 +1,6 @@
 #include "console/interpreter/key_units.hpp"
 
-#include "console/target/target.hpp"
+#include "console/target/robot_target.hpp"
 #include "robot/framework/type_desc.hpp"
 
 namespace stride::console {
@@ -31,7 +31,7 @@ std::string unit_of_path(const TypeDesc& type, std::string_view path) {
   return unit;
 }
 
-std::string unit_of_key(Target& target, const std::string& key) {
+std::string unit_of_key(RobotTarget& target, const std::string& key) {
   if (key.starts_with("representation:") || key.starts_with("module:")) {
     const std::size_t cut = key.find_first_of(".[");
     try {

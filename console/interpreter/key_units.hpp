@@ -10,12 +10,12 @@ struct TypeDesc;
 
 namespace stride::console {
 
-class Target;
+class RobotTarget;
 
 // The unit of the field `path` ("position[10]", "com.x") of a described type; "" if none.
 std::string unit_of_path(const TypeDesc& type, std::string_view path);
 
 // The unit of `key`'s value ("rad", "m", "s"), "" when it has none or it is unknown.
-std::string unit_of_key(Target& target, const std::string& key);
+std::string unit_of_key(RobotTarget& target, const std::string& key);
 
 }  // namespace stride::console

@@ -38,7 +38,7 @@ const std::vector<std::string> kSimKeys = {
     "log.complete",    "log.damaged",   "log.truncated", "log.mismatches",   "log.compared",
     "log.replayed"};
 
-std::vector<std::string> field_names(const std::string& key, Target& target) {
+std::vector<std::string> field_names(const std::string& key, RobotTarget& target) {
   return safely([&] {
     const TypeDesc& d = target.type_of(key);
     std::vector<std::string> out;
@@ -68,7 +68,7 @@ std::vector<std::string> complete_path(const std::string& word) {
   return out;
 }
 
-std::vector<std::string> complete_key(const std::string& word, Target& target) {
+std::vector<std::string> complete_key(const std::string& word, RobotTarget& target) {
   const auto colon = word.find(':');
   if (colon == std::string::npos) {
     std::vector<std::string> all = {"representation:", "module:"};
@@ -91,7 +91,7 @@ std::vector<std::string> complete_key(const std::string& word, Target& target) {
 }
 
 std::vector<std::string> complete(const std::vector<std::string>& before, const std::string& word,
-                                  Target& target) {
+                                  RobotTarget& target, const std::vector<std::string>& robots) {
   if (before.empty()) return starting_with(command_names(), word);
   const std::string& command = before[0];
   const std::size_t position = before.size();  // index of `word` among the arguments + 1
@@ -145,7 +145,7 @@ std::vector<std::string> complete(const std::vector<std::string>& before, const 
   }
   if (command == "realtime" && position == 1) return starting_with({"on", "off"}, word);
   if (command == "robot" && position == 1) {
-    auto names = safely([&] { return target.robot_names(); });
+    auto names = robots;
     names.push_back("?");
     return starting_with(names, word);
   }

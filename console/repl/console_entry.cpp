@@ -8,6 +8,7 @@
 #include "console/target/local_target.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/debug/auth.hpp"
 
 namespace stride::console {
 
@@ -17,15 +18,20 @@ struct ConsoleArgs {
   std::string inline_commands;
   bool has_inline = false;
   std::string scene;
+  std::string connect;     // host:port of a robot to act on
+  std::string token_file;  // its token (else STRIDE_TOKEN)
 };
 
 ConsoleArgs read_args(const std::vector<std::string>& args) {
   ConsoleArgs c;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a == "--script" || a == "-c") {
+    if (a == "--script" || a == "-c" || a == "--connect" || a == "--token-file") {
       if (i + 1 >= args.size()) throw UsageError("stride: " + a + ": expected a value");
-      (a == "--script" ? c.script : c.inline_commands) = args[++i];
+      (a == "--script"    ? c.script
+       : a == "-c"        ? c.inline_commands
+       : a == "--connect" ? c.connect
+                          : c.token_file) = args[++i];
       if (a == "-c") c.has_inline = true;
     } else if (a.starts_with("-")) {
       throw UsageError("stride: unknown flag " + quote(a) + " (see stride --help)");
@@ -36,10 +42,12 @@ ConsoleArgs read_args(const std::vector<std::string>& args) {
     }
   }
   if (!c.script.empty() && c.has_inline) throw UsageError("stride: give --script or -c, not both");
+  if (!c.token_file.empty() && c.connect.empty())
+    throw UsageError("stride: --token-file is for --connect");
   return c;
 }
 
-std::string quoted(const std::string& s) {
+std::string quoted_word(const std::string& s) {
   std::string q = "\"";
   for (char ch : s) {
     if (ch == '"' || ch == '\\') q += '\\';
@@ -52,7 +60,8 @@ std::string quoted(const std::string& s) {
 std::string console_usage() {
   return "  stride [scene.xml]: interactive console (REPL)\n"
          "  stride --script file.con [scene.xml]: run a script; exit 1 on the first failure\n"
-         "  stride -c \"cmd; cmd\" [scene.xml]: run commands; exit 1 on the first failure\n";
+         "  stride -c \"cmd; cmd\" [scene.xml]: run commands; exit 1 on the first failure\n"
+         "  ... --connect host:port [--token-file f]: the same against a robot's debug server\n";
 }
 
 int console_main(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -66,7 +75,13 @@ int console_main(const std::vector<std::string>& args, std::ostream& out, std::o
   Interpreter interpreter(target, out);
   const bool batch = !c.script.empty() || c.has_inline;
   try {
-    if (!c.scene.empty()) interpreter.execute("load " + quoted(c.scene));
+    if (!c.scene.empty()) interpreter.execute("load " + quoted_word(c.scene));
+    if (!c.connect.empty()) {
+      const std::string token =
+          c.token_file.empty() ? "" : debug::read_token_file(c.token_file).front().secret;
+      interpreter.execute("connect " + quoted_word(c.connect) +
+                          (token.empty() ? std::string() : " " + quoted_word(token)));
+    }
     if (!c.script.empty()) interpreter.run_script(c.script);
     if (c.has_inline) interpreter.run_inline(c.inline_commands);
     if (batch) interpreter.finish();

@@ -28,10 +28,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 // A background run steps this long between looks at the keyboard.
 constexpr auto kSlice = std::chrono::milliseconds(20);
+// Between frames or keys the console looks after its connections this often (keep-alives, `serve`
+// clients of a paused simulation).
+constexpr int kIdleMs = 100;
 
 // readline's C callbacks and the signal handler take no user data, so the session they serve
 // is reachable only from here, set for the duration of run_repl.
-Target* g_completion_target = nullptr;
+Interpreter* g_interpreter = nullptr;
 std::atomic<bool> g_interrupt{false};
 std::vector<std::string> g_matches;
 struct TerminalSession {
@@ -59,7 +62,7 @@ char** attempt_completion(const char* text, int start, int) {
   } catch (const Error&) {
     return nullptr;
   }
-  g_matches = complete(before, text, *g_completion_target);
+  g_matches = complete(before, text, g_interpreter->target(), g_interpreter->robot_names());
   if (g_matches.empty()) return nullptr;
   // Keys and paths continue ("module:Stand" + ".knee_pitch"): no space after a unique match.
   const std::string& only = g_matches.front();
@@ -89,7 +92,7 @@ template <class Input>
 void event_loop(Interpreter& interpreter, Input& input) {
   Clock::duration wait = Clock::duration::zero();
   while (!interpreter.quit_requested() && !input.ended()) {
-    const bool ready = input_ready(interpreter.running() ? milliseconds_until(wait) : -1);
+    const bool ready = input_ready(interpreter.running() ? milliseconds_until(wait) : kIdleMs);
     if (g_interrupt.exchange(false)) {
       if (interpreter.running())
         interpreter.pause_run();
@@ -97,7 +100,11 @@ void event_loop(Interpreter& interpreter, Input& input) {
         input.cancel_line();
     }
     if (ready) input.read();
-    if (!interpreter.running()) continue;
+    if (!interpreter.running()) {
+      interpreter.idle();
+      std::cout.flush();
+      continue;
+    }
     try {
       wait = interpreter.run_slice(kSlice);
     } catch (const Error& e) {
@@ -213,7 +220,7 @@ void terminal_loop(Interpreter& interpreter) {
 }  // namespace
 
 int run_repl(Interpreter& interpreter) {
-  g_completion_target = &interpreter.target();
+  g_interpreter = &interpreter;
   interpreter.set_interactive(&g_interrupt);
   struct sigaction action {};
   action.sa_handler = on_interrupt;  // no SA_RESTART: Ctrl-C wakes the wait for input
@@ -227,7 +234,7 @@ int run_repl(Interpreter& interpreter) {
     event_loop(interpreter, input);
   }
   sigaction(SIGINT, &previous, nullptr);
-  g_completion_target = nullptr;
+  g_interpreter = nullptr;
   return 0;
 }
 

@@ -1,12 +1,12 @@
 #include "console/target/local_target.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <fstream>
 #include <sstream>
 
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/runtime/controller_keys.hpp"
 #include "robot/runtime/recorded_config.hpp"
 #include "robot/runtime/replay.hpp"
 #include "simulator/run_report.hpp"
@@ -21,14 +21,11 @@ std::string number_text(double v) {
   o << v;
   return o.str();
 }
-// All the digits a double needs to read back the same: debug values are the module's own.
-std::string exact_text(double v) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
-}
 }  // namespace
 
-LocalTarget::~LocalTarget() = default;
+LocalTarget::~LocalTarget() {
+  stop_serving();
+}
 
 std::string LocalTarget::name() const {
   return session_ ? "local " + session_->simulation().scene().name : "local (no scene)";
@@ -78,14 +75,16 @@ void LocalTarget::select_robot(const std::string& name) {
 void LocalTarget::load(const std::string& scene_path) {
   auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
   session_ = std::move(fresh);
-  selected_ = 0;
+  selected_ = served_ = 0;
   swapped_.clear();
   video_.stop();  // a recording belongs to the scene it started in
+  attach_server();
 }
 
 void LocalTarget::reset() {
   session().reset();
   swapped_.clear();
+  attach_server();
 }
 
 std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
@@ -104,40 +103,12 @@ double LocalTarget::step_seconds() const {
   return session_ ? session_->simulation().scene().physics.step : 0.0;
 }
 
-std::string LocalTarget::controller_value(const std::string& key) {
-  Runtime& rt = runtime();
-  if (key.starts_with("debug:")) {
-    const std::string name = key.substr(6);
-    const auto& values = rt.debug_values();
-    if (const auto it = values.find(name); it != values.end()) return exact_text(it->second);
-    const auto dot = name.rfind('.');
-    const std::string request = name.substr(0, dot);
-    std::string emitted;  // the request's values so far
-    for (const auto& [value, v] : values)
-      if (value.starts_with(request + ".")) emitted += (emitted.empty() ? "" : ", ") + value;
-    for (const auto& [n, state] : rt.debug_requests()) {
-      if (n != request) continue;
-      if (!emitted.empty()) throw Error(key + ": no such value (" + emitted + ")");
-      if (state == DebugSwitch::Off) throw Error(key + ": switch it on first (dr " + n + " on)");
-      return "nan";  // on, but its module has not run since
-    }
-    throw Error(key + ": no debug request '" + request + "' (dr ? lists them)");
-  }
-  const std::string rep = key.substr(key.find(':') + 1);
-  const auto names = rt.representation_names();
-  if (std::find(names.begin(), names.end(), rep) == names.end())
-    throw Error("no representation '" + rep + "' on the blackboard");
-  if (key.starts_with("override:")) {
-    const auto it = rt.overrides().find(rep);
-    return it == rt.overrides().end() ? "(none)" : it->second;
-  }
-  const std::string by = rt.provider_of(rep);
-  return by.empty() ? "(built-in)" : by;
+std::string LocalTarget::time_text() {
+  return number_text(session().simulation().time());
 }
 
 std::string LocalTarget::sim_value(const std::string& key) {
-  if (key.starts_with("provider:") || key.starts_with("override:") || key.starts_with("debug:"))
-    return controller_value(key);
+  if (is_controller_key(key)) return controller_value(runtime(), key);
   if (key == "log.frames" || key == "log.complete" || key == "log.damaged" ||
       key == "log.truncated") {
     if (!log_) throw Error(key + ": no log loaded (log load <file>)");
@@ -226,9 +197,13 @@ DebugOutput LocalTarget::take_debug_output() {
     if (!rt) continue;
     // With several robots every line says whose it is.
     const std::string who = sim.robot_count() > 1 ? sim.robot(i).name() + " " : "";
+    // A served robot's debug server takes its output after every frame and keeps it for us.
+    debug::DebugText taken;
+    if (server_ && i == served_) taken = server_->take_kept_debug_output();
+    for (auto& line : taken.lines) d.lines.push_back(who + line);
     for (auto& line : rt->take_debug_lines()) d.lines.push_back(who + line);
-    if (std::string stop = rt->take_debug_stop(); !stop.empty() && d.stop.empty())
-      d.stop = who + stop;
+    std::string stop = taken.stop.empty() ? rt->take_debug_stop() : taken.stop;
+    if (!stop.empty() && d.stop.empty()) d.stop = who + stop;
   }
   return d;
 }
@@ -243,6 +218,12 @@ void LocalTarget::log_stop() {
   Runtime& rt = runtime();
   if (!rt.logging()) throw Error("no log is being recorded");
   rt.stop_log();
+}
+
+std::string LocalTarget::log_save(const std::string& path, const std::string& destination) {
+  // Logs are flushed every frame, so a copy holds every complete frame even while recording.
+  copy_file_checked(path, destination);
+  return "saved " + path + " as " + destination;
 }
 
 std::string LocalTarget::log_load(const std::string& path) {
@@ -340,6 +321,40 @@ void LocalTarget::video_start(const std::string& dir, const std::string& view,
 std::uint64_t LocalTarget::video_stop() {
   video_.stop();
   return video_.frames();
+}
+
+const debug::Endpoint& LocalTarget::serve(debug::ServerOptions options) {
+  Runtime& rt = runtime();  // the selected robot has a controller
+  if (options.robot.empty()) options.robot = robot().name();
+  options.keep_debug_output = true;  // this console shows the debug output too
+  auto server = std::make_unique<debug::DebugServer>(std::move(options));
+  stop_serving();
+  server_ = std::move(server);
+  served_ = selected_;
+  rt.set_frame_boundary(&server_->boundary());
+  return server_->endpoint();
+}
+
+void LocalTarget::stop_serving() {
+  if (!server_) return;
+  if (session_ && served_ < session_->simulation().robot_count())
+    if (Runtime* rt = session_->runtime(served_)) rt->set_frame_boundary(nullptr);
+  server_.reset();
+}
+
+void LocalTarget::attach_server() {
+  if (!server_) return;
+  Runtime* rt =
+      served_ < session().simulation().robot_count() ? session().runtime(served_) : nullptr;
+  if (rt)
+    rt->set_frame_boundary(&server_->boundary());
+  else
+    server_.reset();  // the new scene's robot has no controller to serve
+}
+
+void LocalTarget::serve_idle() {
+  if (!server_ || !session_) return;
+  if (Runtime* rt = session_->runtime(served_)) server_->idle(*rt);
 }
 
 }  // namespace stride::console

@@ -1,18 +1,22 @@
 #pragma once
-// The console target in this process: a SimSession (scene + controllers). Robot and framework
-// keys act on the selected robot (`robot <name>`), the first one after load.
+// The console target in this process: a SimSession (scene + controllers), both the robot side and
+// the simulation side of the console. Robot and framework keys act on the selected robot
+// (`robot <name>`), the first one after load; `serve` offers that robot's controller to debug
+// clients as a robot's debug server does.
 #include <memory>
 #include <optional>
 #include <set>
 
 #include "console/session/sim_session.hpp"
-#include "console/target/target.hpp"
+#include "console/target/robot_target.hpp"
+#include "console/target/simulation_target.hpp"
+#include "robot/debug/server.hpp"
 #include "robot/runtime/log.hpp"
 #include "simulator/render/snapshot.hpp"
 
 namespace stride::console {
 
-class LocalTarget final : public Target {
+class LocalTarget : public RobotTarget, public SimulationTarget {
  public:
   LocalTarget() = default;
   explicit LocalTarget(const std::string& scene_path) { load(scene_path); }
@@ -24,6 +28,7 @@ class LocalTarget final : public Target {
   void reset() override;
   std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
   double step_seconds() const override;
+  std::string time_text() override;
   std::vector<std::string> robot_names() override;
   std::string selected_robot() override;
   void select_robot(const std::string& name) override;
@@ -43,6 +48,7 @@ class LocalTarget final : public Target {
 
   void log_start(const std::string& path) override;
   void log_stop() override;
+  std::string log_save(const std::string& path, const std::string& destination) override;
   std::string log_load(const std::string& path) override;
   std::vector<std::string> log_goto(std::size_t frame) override;
   void log_export(const std::string& csv_path, const std::vector<std::string>& keys) override;
@@ -61,12 +67,20 @@ class LocalTarget final : public Target {
 
   SimSession& session();
 
+  // Serves the selected robot's controller (`serve`); the server follows it through load and
+  // reset (the first robot after a load). Throws if the robot has no controller or on a bad port.
+  const debug::Endpoint& serve(debug::ServerOptions options);
+  void stop_serving();
+  bool serving() const { return server_ != nullptr; }
+  // Answers debug clients' requests while the simulation is paused.
+  void serve_idle();
+
  private:
+  void attach_server();
   Runtime& runtime();
   sim::SimulatedRobot& robot();  // the selected one; throws without robots
   render::WorldRenderer& renderer();
   std::string sim_value(const std::string& key);
-  std::string controller_value(const std::string& key);  // provider:, override:, debug: keys
 
   std::unique_ptr<SimSession> session_;
   std::unique_ptr<LogReader> log_;
@@ -75,6 +89,8 @@ class LocalTarget final : public Target {
   render::VideoRecorder video_;
   int selected_ = 0;       // robot index
   std::set<int> swapped_;  // robots whose providers differ from the scene's (a replay would not)
+  std::unique_ptr<debug::DebugServer> server_;
+  int served_ = 0;  // robot index the server is attached to
 };
 
 }  // namespace stride::console

@@ -6,24 +6,39 @@
 #include "robot/app/robot_process.hpp"
 #include "robot/app/stop_signals.hpp"
 #include "robot/core/error.hpp"
+#include "robot/debug/server.hpp"
 
 namespace stride {
 
-int robot_main(std::span<const std::string> args, const ModuleRegistry& registry,
-               std::ostream& out, std::ostream& err) {
+int robot_main(std::span<const std::string> args, const ModuleRegistry& registry, std::ostream& out,
+               std::ostream& err) {
   StopSignals stop;  // from here on SIGINT/SIGTERM end the run between frames
   std::unique_ptr<RobotProcess> robot;
+  std::unique_ptr<debug::DebugServer> server;
   try {
-    const Flags f = read_flags(args, {"--config", "--lola", "--log"}, "stride robot");
+    const Flags f =
+        read_flags(args, {"--config", "--lola", "--log", "--debug", "--token-file", "--log-dir"},
+                   "stride robot");
     if (!f.positional.empty())
       throw Error("stride robot: unexpected argument '" + f.positional[0] + "'");
     const std::string config_path = f.value_or("--config", "");
     if (config_path.empty()) throw Error("stride robot: --config <robot.xml> is required");
     RobotConfig config = parse_robot_config_file(config_path);
     config.lola_socket = f.value_or("--lola", config.lola_socket);
+    const std::string name = config.name;
     robot = std::make_unique<RobotProcess>(std::move(config), registry, err);
     const std::string log = f.value_or("--log", "");
     if (!log.empty()) robot->start_log(log);
+    if (const std::string at = f.value_or("--debug", ""); !at.empty()) {
+      debug::ServerOptions options;
+      options.listen = debug::parse_endpoint(at, "stride robot: --debug");
+      options.tokens = debug::tokens_from(f.value_or("--token-file", ""));
+      options.log_dir = f.value_or("--log-dir", ".");
+      options.robot = name;
+      server = std::make_unique<debug::DebugServer>(std::move(options));
+      robot->set_frame_boundary(&server->boundary());
+      err << "stride robot: debug server on " << server->endpoint().text() << std::endl;
+    }
   } catch (const Error& e) {
     err << e.what() << std::endl;
     return kRobotBadInput;
@@ -33,6 +48,8 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
     err << "stride robot: " << (stop.signal() == SIGINT ? "SIGINT" : "SIGTERM")
         << ": stopped after a complete frame" << std::endl;
   out << robot->summary() << std::flush;
+  if (server) robot->set_frame_boundary(nullptr);
+  server.reset();
   robot.reset();  // closes the log and the socket
   return code;
 }

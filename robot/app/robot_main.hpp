@@ -2,6 +2,7 @@
 // The robot-side programs, for a `main` that links only robot/ and behaviours/ (`stride-robot`,
 // which `stride robot` and `stride lola` start):
 //   stride robot --config <robot.xml> [--lola <socket>] [--log <file>]
+//                [--debug <addr:port> [--token-file f] [--log-dir d]]
 //   stride lola dump [<socket>] [--frames N]
 #include <iosfwd>
 #include <span>
@@ -11,16 +12,17 @@
 
 namespace stride {
 
-int robot_main(std::span<const std::string> args, const ModuleRegistry& registry,
-               std::ostream& out, std::ostream& err);
+int robot_main(std::span<const std::string> args, const ModuleRegistry& registry, std::ostream& out,
+               std::ostream& err);
 
 // Prints decoded sensor frames from any LoLA server (robot or simulator), answering each packet
 // with an empty map so nothing moves and a lockstep simulator keeps going.
 int lola_main(std::span<const std::string> args, std::ostream& out, std::ostream& err);
 
 inline constexpr std::string_view kRobotUsage =
-    "robot --config <robot.xml> [--lola <socket>] [--log <file>]: the robot runtime on LoLA (a "
-    "NAO v6, or `stride run <scene> --lola <socket>`); runs until SIGINT/SIGTERM";
+    "robot --config <robot.xml> [--lola <socket>] [--log <file>] [--debug <addr:port> "
+    "[--token-file f] [--log-dir d]]: the robot runtime on LoLA (a NAO v6, or `stride run <scene> "
+    "--lola <socket>`), with a debug server for `connect` (--debug); runs until SIGINT/SIGTERM";
 inline constexpr std::string_view kLolaUsage =
     "lola dump [<socket>] [--frames N]: print decoded LoLA sensor frames (default /tmp/robocup)";
 

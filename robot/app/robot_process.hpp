@@ -31,6 +31,8 @@ class RobotProcess {
   ~RobotProcess();
 
   void start_log(const std::string& path) { runtime_->start_log(path); }
+  // Called after every frame (a debug server's side of the loop); nullptr: none. Not owned.
+  void set_frame_boundary(FrameBoundary* boundary) { runtime_->set_frame_boundary(boundary); }
   // Runs until `stop_requested()` (asked between frames) or a fault ends the run.
   int run(const std::function<bool()>& stop_requested);
   // What happened, for the end of a run: frames, link, safety and module counts.

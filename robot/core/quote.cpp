@@ -1,5 +1,8 @@
 #include "robot/core/quote.hpp"
 
+#include "robot/core/one_line.hpp"
+
+#include <algorithm>
 #include <cstdio>
 
 namespace stride {
@@ -44,6 +47,14 @@ std::string quote(std::string_view text) {
   out += "...";
   append_escaped(out, text.substr(tail));
   return out + "' (" + std::to_string(text.size()) + " characters)";
+}
+
+std::string one_line(std::string_view text, std::size_t max) {
+  std::string out;
+  std::size_t cut = std::min(max, text.size());
+  while (cut > 0 && cut < text.size() && continuation(text[cut])) --cut;
+  append_escaped(out, text.substr(0, cut));
+  return text.size() > max ? out + "..." : out;
 }
 
 }  // namespace stride

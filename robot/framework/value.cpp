@@ -398,7 +398,11 @@ Value default_value(const TypeDesc& d) {
   }
 }
 
-Value read_value(const TypeDesc& d, ByteReader& r) {
+namespace {
+
+// Elements of an empty struct take no bytes, so the bytes left cannot bound how many values a
+// hostile description makes; every array or list element spends one unit of this budget.
+Value read_bounded(const TypeDesc& d, ByteReader& r, std::size_t& budget) {
   switch (d.kind) {
     case Kind::Bool:
       return {r.get<std::uint8_t>() != 0};
@@ -422,21 +426,29 @@ Value read_value(const TypeDesc& d, ByteReader& r) {
     case Kind::Array:
     case Kind::List: {
       const std::size_t n = d.kind == Kind::Array ? d.length : r.get<std::uint32_t>();
-      if (n > r.remaining())  // every element takes at least one byte
+      if (n > budget)
         throw Error("binary data: " + std::to_string(n) + " elements but only " +
                     std::to_string(r.remaining()) + " bytes left");
+      budget -= n;
       Value::List items;
       items.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) items.push_back(read_value(*d.element, r));
+      for (std::size_t i = 0; i < n; ++i) items.push_back(read_bounded(*d.element, r, budget));
       return {std::move(items)};
     }
     case Kind::Struct: {
       Value::List items;
-      for (const auto& f : d.fields) items.push_back(read_value(*f.type, r));
+      for (const auto& f : d.fields) items.push_back(read_bounded(*f.type, r, budget));
       return {std::move(items)};
     }
   }
   throw Error("unknown kind in type description");
+}
+
+}  // namespace
+
+Value read_value(const TypeDesc& d, ByteReader& r) {
+  std::size_t budget = 4 * r.remaining() + 4096;
+  return read_bounded(d, r, budget);
 }
 
 void write_value(const TypeDesc& d, const Value& v, ByteWriter& w) {

@@ -6,6 +6,7 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/runtime/console_key.hpp"
 #include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/recorded_config.hpp"
 
@@ -14,32 +15,6 @@ namespace stride {
 namespace {
 
 const std::set<std::string> kBuiltIn = {"SensorFrame", "FrameInfo", "ModuleTimes", "CommandSafety"};
-
-struct Key {
-  bool representation;
-  std::string name;
-  std::string path;
-};
-
-Key split_key(std::string_view key) {
-  Key k;
-  std::string_view rest;
-  if (key.starts_with("representation:")) {
-    k.representation = true;
-    rest = key.substr(15);
-  } else if (key.starts_with("module:")) {
-    k.representation = false;
-    rest = key.substr(7);
-  } else {
-    throw Error("key " + quote(key) + ": expected representation:<Name> or module:<Name>");
-  }
-  const auto cut = std::min(rest.find('.'), rest.find('['));
-  k.name = std::string(rest.substr(0, cut));
-  if (cut != std::string_view::npos)
-    k.path = std::string(rest.substr(rest[cut] == '.' ? cut + 1 : cut));
-  if (k.name.empty()) throw Error("key " + quote(key) + ": expected a name after ':'");
-  return k;
-}
 
 }  // namespace
 
@@ -157,6 +132,12 @@ const Slot& Runtime::representation_slot(const std::string& name) const {
   return *it->second;
 }
 
+const Slot& Runtime::parameter_slot_of(const std::string& module) const {
+  auto it = parameters_.find(module);
+  if (it == parameters_.end()) throw Error("no module " + quote(module) + " with parameters");
+  return *it->second;
+}
+
 int Runtime::debug_request_index(std::string_view name) {
   auto& names = debug_.names;
   auto it = std::find(names.begin(), names.end(), name);
@@ -193,6 +174,7 @@ void Runtime::replan(const std::map<std::string, std::string>& chosen) {
   plan_ = std::move(plan);
   chosen_ = chosen;
   order_ = plan_.order;
+  ++plan_generation_;
   times_->modules = order_;
   times_->ns.assign(order_.size(), 0);
 }
@@ -218,6 +200,7 @@ bool Runtime::step() {
       log_.reset();  // the frames written so far stay readable; recording stops here
       throw;
     }
+  if (boundary_) boundary_->after_frame(*this);
   return true;
 }
 
@@ -291,7 +274,7 @@ void Runtime::set_parameters(const std::string& module, std::string_view text) {
 }
 
 std::string Runtime::get(std::string_view key) const {
-  const auto k = split_key(key);
+  const auto k = split_console_key(key);
   if (k.representation) return representation_slot(k.name).text_at(k.path, k.name);
   auto it = parameters_.find(k.name);
   if (it == parameters_.end()) throw Error("no module " + quote(k.name) + " with parameters");
@@ -299,7 +282,7 @@ std::string Runtime::get(std::string_view key) const {
 }
 
 void Runtime::set(std::string_view key, std::string_view text) {
-  const auto k = split_key(key);
+  const auto k = split_console_key(key);
   const std::string update = k.path.empty() ? std::string(text) : k.path + "=" + std::string(text);
   if (!k.representation) return set_parameters(k.name, update);
   auto it = by_name_.find(k.name);
@@ -336,7 +319,7 @@ void Runtime::apply_overrides_of(const std::set<std::string>& representations) {
 }
 
 const TypeDesc& Runtime::type_of(std::string_view key) const {
-  const auto k = split_key(key);
+  const auto k = split_console_key(key);
   const Slot* s = nullptr;
   if (k.representation)
     s = &representation_slot(k.name);
@@ -409,6 +392,10 @@ void Runtime::start_log(const std::string& path, const LogMetadata& metadata) {
   LogMetadata all = config_metadata(running_config());
   for (const auto& [key, value] : metadata) all[key] = value;
   log_ = std::make_unique<LogWriter>(path, std::move(slots), all);
+}
+
+std::size_t Runtime::logged_frames() const {
+  return log_ ? log_->frames_written() : 0;
 }
 
 void Runtime::stop_log() {

@@ -18,6 +18,7 @@
 #include "robot/representations/frame_info.hpp"
 #include "robot/representations/hal_reflection.hpp"
 #include "robot/runtime/command_guard.hpp"
+#include "robot/runtime/frame_boundary.hpp"
 #include "robot/runtime/log.hpp"
 #include "robot/runtime/runtime_config.hpp"
 
@@ -88,6 +89,12 @@ class Runtime {
   void start_log(const std::string& path, const LogMetadata& metadata = {});
   void stop_log();
   bool logging() const { return log_ != nullptr; }
+  std::size_t logged_frames() const;  // frames in the log being recorded (0 without one)
+
+  // Called at the end of every step (nullptr: none). Not owned.
+  void set_frame_boundary(FrameBoundary* boundary) { boundary_ = boundary; }
+  // Counts re-plans: the blackboard may have new representations after one.
+  std::uint64_t plan_generation() const { return plan_generation_; }
   // Puts frame `frame` of a log onto the blackboard (for `log goto`); returns the names skipped
   // because they are not on this blackboard or have another type.
   std::vector<std::string> load_frame(const LogReader& log, std::size_t frame);
@@ -97,6 +104,7 @@ class Runtime {
     return slot_value<T>(typed_slot(Reflect<T>::type_name(), typeid(T)));
   }
   const Slot& representation_slot(const std::string& name) const;
+  const Slot& parameter_slot_of(const std::string& module) const;  // throws naming the module
 
  private:
   class Context;
@@ -141,6 +149,8 @@ class Runtime {
   std::vector<ModuleFault> faults_;
   std::int64_t frame_counter_ = 0;
   std::unique_ptr<LogWriter> log_;
+  FrameBoundary* boundary_ = nullptr;
+  std::uint64_t plan_generation_ = 0;
 };
 
 }  // namespace stride

@@ -48,8 +48,8 @@ TEST_F(CompletionTest, ProvidersSwitchesAndLogActions) {
 
 TEST(CompletionTwoRobots, RobotNames) {
   LocalTarget two{STRIDE_SOURCE_DIR "/scenes/two_naos.xml"};
-  EXPECT_EQ(complete({"robot"}, "b", two), (Words{"blue"}));
-  EXPECT_EQ(complete({"robot"}, "", two), (Words{"?", "blue", "red"}));
+  EXPECT_EQ(complete({"robot"}, "b", two, two.robot_names()), (Words{"blue"}));
+  EXPECT_EQ(complete({"robot"}, "", two, two.robot_names()), (Words{"?", "blue", "red"}));
   EXPECT_EQ(complete({"get"}, "robot.na", two), (Words{"robot.name"}));
 }
 

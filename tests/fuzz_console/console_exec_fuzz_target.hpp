@@ -49,7 +49,8 @@ inline const std::filesystem::path& console_fuzz_dir() {
   return dir;
 }
 
-// Statements that would write outside the scratch directory or pace the run by the wall clock.
+// Statements that would write outside the scratch directory, pace the run by the wall clock, or
+// open network connections (connect, serve).
 inline bool allowed_statement(const std::string& statement) {
   std::vector<std::string> w;
   try {
@@ -58,7 +59,7 @@ inline bool allowed_statement(const std::string& statement) {
     return true;  // the interpreter refuses it itself
   }
   if (w.empty()) return true;
-  if (w[0] == "realtime") return false;
+  if (w[0] == "realtime" || w[0] == "connect" || w[0] == "serve") return false;
   const auto plain = [](const std::string& p) {
     return !p.empty() && p.find('/') == std::string::npos && p != "." && p != "..";
   };

@@ -22,10 +22,13 @@ namespace stride::test {
 
 class ChildProcess {
  public:
-  ChildProcess(const std::vector<std::string>& argv, const std::string& name)
+  // `cwd`: the directory it starts in (default: this process's).
+  ChildProcess(const std::vector<std::string>& argv, const std::string& name,
+               const std::string& cwd = "")
       : out_(scratch(name + ".out")), err_(scratch(name + ".err")) {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
+    if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
     posix_spawn_file_actions_addopen(&actions, 1, out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_addopen(&actions, 2, err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     std::vector<char*> args;
@@ -68,8 +71,8 @@ class ChildProcess {
 
   // A path under the temporary directory unique to this test process.
   static std::string scratch(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("stride_lola_test_" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("stride_lola_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     return (dir / name).string();
   }

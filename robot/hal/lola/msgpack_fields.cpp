@@ -4,36 +4,9 @@
 #include <limits>
 
 #include "robot/core/error.hpp"
+#include "robot/core/msgpack_type_name.hpp"
 
 namespace stride::hal::lola {
-namespace {
-
-const char* type_name(msgpack::type::object_type t) {
-  switch (t) {
-    case msgpack::type::NIL:
-      return "nil";
-    case msgpack::type::BOOLEAN:
-      return "a boolean";
-    case msgpack::type::POSITIVE_INTEGER:
-    case msgpack::type::NEGATIVE_INTEGER:
-      return "an integer";
-    case msgpack::type::FLOAT32:
-    case msgpack::type::FLOAT64:
-      return "a float";
-    case msgpack::type::STR:
-      return "a string";
-    case msgpack::type::BIN:
-      return "binary data";
-    case msgpack::type::ARRAY:
-      return "an array";
-    case msgpack::type::MAP:
-      return "a map";
-    default:
-      return "an extension";
-  }
-}
-
-}  // namespace
 
 const msgpack::unpack_limit& packet_limits() {
   // array, map, str, bin, ext elements/bytes; nesting depth (map -> array -> element).
@@ -60,15 +33,15 @@ msgpack::object_handle unpack_packet(std::span<const char> bytes, std::string_vi
 
 MapReader::MapReader(const msgpack::object& map, std::string_view what) : what_(what) {
   if (map.type != msgpack::type::MAP)
-    throw Error(std::string(what) + ": expected a map, got " + type_name(map.type));
+    throw Error(std::string(what) + ": expected a map, got " + msgpack_type_name(map.type));
   map_ = map.via.map;
 }
 
 std::string_view MapReader::key(std::size_t i) const {
   const msgpack::object& k = map_.ptr[i].key;
   if (k.type != msgpack::type::STR)
-    throw Error(std::string(what_) + ": entry " + std::to_string(i) + ": expected a string key, got " +
-                type_name(k.type));
+    throw Error(std::string(what_) + ": entry " + std::to_string(i) +
+                ": expected a string key, got " + msgpack_type_name(k.type));
   return {k.via.str.ptr, k.via.str.size};
 }
 
@@ -80,7 +53,7 @@ const msgpack::object_array& MapReader::array(std::size_t i, std::size_t length)
   const msgpack::object& v = value(i);
   if (v.type != msgpack::type::ARRAY)
     fail(key(i), std::string("expected an array of ") + std::to_string(length) + ", got " +
-                     type_name(v.type));
+                     msgpack_type_name(v.type));
   if (v.via.array.size != length)
     fail(key(i), "expected " + std::to_string(length) + " elements, got " +
                      std::to_string(v.via.array.size));
@@ -99,10 +72,11 @@ void MapReader::numbers(std::size_t i, std::span<double> out) const {
     else if (e.type == msgpack::type::NEGATIVE_INTEGER)
       v = static_cast<double>(e.via.i64);
     else
-      fail(key(i), "[" + std::to_string(k) + "]: expected a number, got " + type_name(e.type));
+      fail(key(i),
+           "[" + std::to_string(k) + "]: expected a number, got " + msgpack_type_name(e.type));
     if (!std::isfinite(v))
-      fail(key(i), "[" + std::to_string(k) + "]: expected a finite number, got " +
-                       std::to_string(v));
+      fail(key(i),
+           "[" + std::to_string(k) + "]: expected a finite number, got " + std::to_string(v));
     out[k] = v;
   }
 }
@@ -118,7 +92,7 @@ void MapReader::integers(std::size_t i, std::span<std::int32_t> out) const {
       out[k] = static_cast<std::int32_t>(e.via.i64);
     else
       fail(key(i), "[" + std::to_string(k) + "]: expected a 32-bit integer, got " +
-                       type_name(e.type));
+                       msgpack_type_name(e.type));
   }
 }
 
@@ -127,7 +101,7 @@ void MapReader::booleans(std::size_t i, std::span<bool> out) const {
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (a.ptr[k].type != msgpack::type::BOOLEAN)
       fail(key(i), "[" + std::to_string(k) + "]: expected a boolean, got " +
-                       type_name(a.ptr[k].type));
+                       msgpack_type_name(a.ptr[k].type));
     out[k] = a.ptr[k].via.boolean;
   }
 }
@@ -137,7 +111,7 @@ void MapReader::strings(std::size_t i, std::span<std::string_view> out) const {
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (a.ptr[k].type != msgpack::type::STR)
       fail(key(i), "[" + std::to_string(k) + "]: expected a string, got " +
-                       type_name(a.ptr[k].type));
+                       msgpack_type_name(a.ptr[k].type));
     out[k] = std::string_view(a.ptr[k].via.str.ptr, a.ptr[k].via.str.size);
   }
 }

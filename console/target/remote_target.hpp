@@ -1,0 +1,87 @@
+#pragma once
+// A robot behind a debug server (`connect host:port`): the robot-side console commands over TCP.
+// Values are decoded here from the type descriptions the robot sends with them, so a console
+// built from another revision shows and edits the robot's representations all the same.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "console/target/robot_target.hpp"
+#include "robot/debug/debug_client.hpp"
+#include "robot/framework/value.hpp"
+
+namespace stride::console {
+
+class RemoteTarget final : public RobotTarget {
+ public:
+  // Connects and authenticates; throws stride::Error (one line) naming the endpoint.
+  RemoteTarget(const debug::Endpoint& endpoint, const std::string& token,
+               debug::ClientOptions options = {});
+
+  std::string name() const override;
+  std::string label() const { return endpoint_.text(); }  // what `robot` and `disconnect` take
+  const std::string& robot() const { return client_->hello().robot; }
+  bool read_only() const { return client_->welcome().read_only; }
+  bool loaded() const override { return true; }
+
+  std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
+  double step_seconds() const override { return period_; }
+  std::string time_text() override;
+  void observe(const std::vector<std::string>& keys) override { observed_ = keys; }
+  std::uint64_t samples_dropped() const override { return dropped_; }
+
+  std::string get(const std::string& key) override;
+  const TypeDesc& type_of(const std::string& key) override;
+  void set(const std::string& key, const std::string& fields) override;
+
+  std::vector<std::string> representations() override;
+  std::vector<std::string> parameter_modules() override;
+  std::string provider_of(const std::string& representation) override;
+  std::vector<std::string> providers_available(const std::string& representation) override;
+  void swap_provider(const std::string& representation, const std::string& module) override;
+  std::vector<std::pair<std::string, DebugSwitch>> debug_requests() override;
+  void set_debug_request(const std::string& name, DebugSwitch state) override;
+  DebugOutput take_debug_output() override;
+
+  void log_start(const std::string& path) override;
+  void log_stop() override;
+  std::string log_save(const std::string& path, const std::string& destination) override;
+
+  std::string report_text() override;
+  std::string report_json() override;
+
+  // Pings and reads what arrived while the console waits for input.
+  void keep_alive() { client_->keep_alive(); }
+
+ private:
+  struct Listing {
+    std::vector<std::string> representations, providers, modules, debug, debug_state;
+    std::vector<std::vector<std::string>> available;
+  };
+  struct Root {  // a representation's or parameter set's last value and description
+    std::string desc_bytes;
+    TypeDescPtr desc;
+    Value value;
+  };
+  std::unique_ptr<debug::ServerMessage> call(debug::Request r);
+  Listing list();
+  Root& fetch(const std::string& key);           // root of the key, fresh from the robot
+  std::string streamed(const std::string& key);  // from the current sample
+  std::int64_t subscribe();                      // returns the first frame streamed
+  std::string text_of(const TypeDesc& d, const std::string& bytes, const std::string& key);
+
+  debug::Endpoint endpoint_;
+  std::unique_ptr<debug::DebugClient> client_;
+  double period_ = 0;
+  std::map<std::string, Root> roots_;
+  std::vector<std::string> observed_;
+  std::vector<std::string> subscribed_;  // keys of the live subscription, in sample order
+  std::vector<TypeDescPtr> subscribed_descs_;
+  std::optional<debug::Sample> current_;  // while advancing
+  double last_time_ = 0;
+  std::uint64_t dropped_ = 0;
+};
+
+}  // namespace stride::console

@@ -1,0 +1,103 @@
+#pragma once
+// What the control loop and the debug server's thread share: two request/reply rings, a ring of
+// frame snapshots with a ring to hand their buffers back, and a few atomics. Everything is
+// bounded; neither side ever waits for the other (spsc_ring.hpp).
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "robot/debug/protocol.hpp"
+#include "robot/debug/spsc_ring.hpp"
+
+namespace stride::debug {
+
+inline constexpr std::size_t kMaxSlots = 512;  // representations + parameter modules served
+
+// Names and type descriptions of everything on the blackboard, in a fixed order: the indices
+// used by snapshots and the wanted mask. Rebuilt by the loop after every re-plan.
+struct Catalogue {
+  std::uint64_t generation = 0;
+  std::vector<std::string> keys;        // "representation:X" then "module:X"
+  std::vector<std::string> desc_bytes;  // write_type_desc of each
+};
+
+// A frame's values of the wanted slots, encoded as the log encodes them.
+struct Snapshot {
+  std::uint64_t generation = 0;  // the catalogue it indexes
+  std::int64_t frame = 0;
+  double time = 0;
+  std::uint64_t loop_frames = 0;  // Exchange::frames when made: the loop has not moved on while
+                                  // this equals Exchange::frames
+  bool new_frame = false;  // false: republished between frames (after a change, or while paused)
+  // Debug output of the frames since the last snapshot streamed (new frames only): printed lines,
+  // the first request to pause, and every debug:X.y value (few: those of switched-on requests).
+  std::vector<std::string> debug_lines;
+  std::string debug_stop;
+  std::vector<std::pair<std::string, double>> debug_values;
+  std::string bytes;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // per slot: offset, size
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
+};
+
+// What the loop knows and the server formats for `list` and `report`.
+struct RobotState {
+  std::string robot;
+  double period = 0;
+  std::int64_t frame = 0;
+  double time = 0;
+  std::vector<std::string> representations, providers;
+  std::vector<std::vector<std::string>> available;
+  std::vector<std::string> parameter_modules, module_order;
+  std::vector<std::int64_t> module_ns;  // ModuleTimes of the last frame, in module order
+  std::vector<std::string> debug_requests;
+  std::vector<std::string> debug_states;  // off, on, quiet
+  std::string log_file;                   // being recorded ("" none)
+  std::uint64_t log_frames = 0;
+};
+
+struct LoopRequest {
+  std::uint64_t client = 0;
+  Request request;
+  std::string path;  // LogStart: the file in the log directory
+};
+
+struct LoopReply {
+  std::uint64_t client = 0;
+  std::uint64_t id = 0;
+  Op op = Op::Ping;
+  std::string error;         // empty: done
+  std::string text;          // Mr: the new provider; LogStart/LogStop: the file; Value: the value
+  std::uint64_t frames = 0;  // LogStop: frames in the closed log
+  bool json = false;         // Report
+  std::shared_ptr<const RobotState> state;  // List, Report
+};
+
+// Loop -> server, in one ring so that order holds: a reply always follows the snapshot that
+// shows its effect (a `get` after a `set` sees the new value).
+struct LoopMessage {
+  enum class Kind { Catalogue, Snapshot, Reply };
+  Kind kind = Kind::Reply;
+  std::shared_ptr<const Catalogue> catalogue;
+  std::unique_ptr<Snapshot> snapshot;
+  LoopReply reply;
+};
+
+struct Exchange {
+  SpscRing<LoopRequest, 256> requests;            // server -> loop
+  SpscRing<LoopMessage, 64> to_server;            // loop -> server
+  SpscRing<std::unique_ptr<Snapshot>, 64> spent;  // server -> loop (buffers to reuse)
+
+  std::array<std::atomic<std::uint64_t>, kMaxSlots / 64> wanted{};  // slot bits the server needs
+  std::atomic<std::uint64_t> wanted_generation{0};                  // catalogue the bits index
+  std::atomic<bool> clients{false};              // anyone connected: snapshots are worth making
+  std::atomic<std::uint64_t> snapshots_lost{0};  // full ring: the server thread fell behind
+  std::atomic<std::uint64_t> frames{0};          // frames the loop has passed
+  std::atomic<double> period{0};                 // the loop's control period
+  int wake_fd = -1;  // eventfd the loop pokes after a reply (server thread owns it)
+};
+
+}  // namespace stride::debug

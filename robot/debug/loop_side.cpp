@@ -1,0 +1,256 @@
+#include "robot/debug/loop_side.hpp"
+
+#include <sys/eventfd.h>
+#include <unistd.h>
+
+#include <exception>
+
+#include "robot/runtime/controller_keys.hpp"
+
+namespace stride::debug {
+
+namespace {
+// Appends up to `limit` lines in all, counting the rest; the first stop reason stays.
+void hold(DebugText& to, std::uint64_t& dropped, const std::vector<std::string>& lines,
+          const std::string& stop, std::size_t limit) {
+  for (const auto& line : lines)
+    if (to.lines.size() < limit)
+      to.lines.push_back(line);
+    else
+      ++dropped;
+  if (to.stop.empty()) to.stop = stop;
+}
+
+void say_dropped(std::vector<std::string>& lines, std::uint64_t& dropped) {
+  if (dropped > 0) lines.push_back("(" + std::to_string(dropped) + " debug lines dropped)");
+  dropped = 0;
+}
+}  // namespace
+
+LoopSide::LoopSide(Exchange& exchange, std::string robot_name, bool keep_debug_output)
+    : x_(exchange), robot_(std::move(robot_name)), keep_(keep_debug_output) {}
+
+void LoopSide::take_debug_output(Runtime& rt) {
+  const std::vector<std::string> lines = rt.take_debug_lines();
+  const std::string stop = rt.take_debug_stop();
+  if (lines.empty() && stop.empty()) return;
+  if (keep_) hold(kept_, kept_dropped_, lines, stop, kMaxDebugLines);
+  if (x_.clients.load(std::memory_order_relaxed))
+    hold(pending_, pending_dropped_, lines, stop, kMaxHeldLines);
+}
+
+DebugText LoopSide::take_kept_debug_output() {
+  DebugText out = std::move(kept_);
+  kept_ = {};
+  say_dropped(out.lines, kept_dropped_);
+  return out;
+}
+
+void LoopSide::refresh_catalogue(Runtime& rt) {
+  auto c = std::make_shared<Catalogue>();
+  c->generation = ++generation_;
+  slots_.clear();
+  auto add = [&](std::string key, const Slot& s) {
+    if (slots_.size() >= kMaxSlots) return;  // more are not served (never the case for the NAO)
+    std::string desc;
+    ByteWriter w(desc);
+    write_type_desc(w, s.desc());
+    c->keys.push_back(std::move(key));
+    c->desc_bytes.push_back(std::move(desc));
+    slots_.push_back(&s);
+  };
+  for (const auto& name : rt.representation_names())
+    add("representation:" + name, rt.representation_slot(name));
+  for (const auto& module : rt.parameter_modules())
+    add("module:" + module, rt.parameter_slot_of(module));
+  frame_info_ = &rt.representation<FrameInfo>();
+  runtime_ = &rt;
+  plan_generation_ = rt.plan_generation();
+  wanted_.fill(0);
+  pending_catalogue_ = std::move(c);
+}
+
+LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
+  const Request& r = in.request;
+  LoopReply out;
+  out.client = in.client;
+  out.id = r.id;
+  out.op = r.op;
+  out.json = r.on;
+  try {
+    switch (r.op) {
+      case Op::Set:
+        rt.set(r.key, r.text);
+        break;
+      case Op::Mr:
+        rt.swap_provider(r.key, r.text);
+        out.text = rt.provider_of(r.key);
+        break;
+      case Op::Dr:
+        rt.set_debug_request(r.key, debug_switch_named(r.text).value_or(DebugSwitch::Off));
+        break;
+      case Op::Value:
+        out.text = controller_value(rt, r.key);
+        break;
+      case Op::LogStart:
+        if (rt.logging()) throw Error("a log is already being recorded (log stop first)");
+        rt.start_log(in.path);
+        log_file_ = r.key;
+        out.text = r.key;
+        break;
+      case Op::LogStop:
+        if (!rt.logging()) throw Error("no log is being recorded");
+        out.text = log_file_;
+        out.frames = rt.logged_frames();
+        rt.stop_log();
+        log_file_.clear();
+        break;
+      case Op::List:
+      case Op::Report:
+        out.state = std::make_shared<RobotState>(robot_state(rt, robot_, log_file_));
+        break;
+      default:
+        throw Error(std::string(op_name(r.op)) + " is not a loop request");
+    }
+  } catch (const std::exception& e) {
+    out.error = e.what();
+  }
+  return out;
+}
+
+bool LoopSide::wanted_changed() {
+  bool changed = false;
+  const bool current = x_.wanted_generation.load(std::memory_order_acquire) == generation_;
+  for (std::size_t i = 0; i < wanted_.size(); ++i) {
+    const std::uint64_t bits = current ? x_.wanted[i].load(std::memory_order_relaxed) : 0;
+    changed |= bits != wanted_[i];
+    wanted_[i] = bits;
+  }
+  return changed;
+}
+
+bool LoopSide::publish(bool new_frame) {
+  std::unique_ptr<Snapshot> s;
+  if (!x_.spent.try_pop(s)) s = std::make_unique<Snapshot>();
+  s->generation = generation_;
+  s->frame = frame_info_->frame;
+  s->time = frame_info_->time;
+  s->new_frame = new_frame;
+  s->loop_frames = x_.frames.load(std::memory_order_relaxed);
+  s->debug_lines.clear();
+  s->debug_stop.clear();
+  s->debug_values.clear();
+  if (new_frame) {
+    say_dropped(pending_.lines, pending_dropped_);
+    s->debug_lines.swap(pending_.lines);
+    s->debug_stop.swap(pending_.stop);
+    s->debug_values.assign(runtime_->debug_values().begin(), runtime_->debug_values().end());
+  }
+  s->bytes.clear();
+  s->parts.assign(slots_.size(), {Snapshot::kAbsent, 0});
+  ByteWriter w(s->bytes);
+  for (std::size_t word = 0; word < wanted_.size(); ++word) {
+    for (std::uint64_t bits = wanted_[word]; bits; bits &= bits - 1) {
+      const std::size_t i = word * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
+      if (i >= slots_.size()) break;
+      const auto at = static_cast<std::uint32_t>(s->bytes.size());
+      slots_[i]->encode(w);
+      s->parts[i] = {at, static_cast<std::uint32_t>(s->bytes.size() - at)};
+    }
+  }
+  LoopMessage m;
+  m.kind = LoopMessage::Kind::Snapshot;
+  m.snapshot = std::move(s);
+  if (x_.to_server.try_push(m)) return true;
+  if (new_frame) {
+    x_.snapshots_lost.fetch_add(1, std::memory_order_relaxed);
+    // The server thread fell behind: the debug output waits for the next snapshot.
+    pending_.lines.swap(m.snapshot->debug_lines);
+    pending_.stop.swap(m.snapshot->debug_stop);
+  }
+  x_.spent.try_push(m.snapshot);  // keep the buffer if there is room; else it is freed here
+  return false;
+}
+
+bool LoopSide::push_catalogue() {
+  if (!pending_catalogue_) return true;
+  LoopMessage m;
+  m.kind = LoopMessage::Kind::Catalogue;
+  m.catalogue = pending_catalogue_;
+  if (!x_.to_server.try_push(m)) return false;
+  pending_catalogue_.reset();
+  return true;
+}
+
+void LoopSide::service(Runtime& rt, bool new_frame) {
+  if (&rt != runtime_ || rt.plan_generation() != plan_generation_) refresh_catalogue(rt);
+  if (new_frame) {
+    x_.frames.fetch_add(1, std::memory_order_relaxed);
+    x_.period.store(frame_info_->period, std::memory_order_relaxed);
+    take_debug_output(rt);
+  }
+  bool poke = pending_catalogue_ && push_catalogue();
+  // Room for every reply, a catalogue and a snapshot is made sure of before a request is taken.
+  replies_.clear();
+  LoopRequest in;
+  while (static_cast<int>(replies_.size()) < kRequestsPerFrame &&
+         x_.to_server.size() + replies_.size() + 3 <= x_.to_server.capacity() &&
+         x_.requests.try_pop(in))
+    replies_.push_back(apply(rt, in));
+  const bool applied = !replies_.empty();
+  if (applied && rt.plan_generation() != plan_generation_) {
+    refresh_catalogue(rt);  // a re-plan may have put new representations on the blackboard
+    push_catalogue();
+  }
+  bool streamed = false;
+  if (x_.clients.load(std::memory_order_relaxed) && !pending_catalogue_) {
+    const bool more_wanted = wanted_changed();
+    bool any = false;
+    for (auto w : wanted_) any |= w != 0;
+    streamed = any;
+    if (any && (new_frame || more_wanted || applied)) publish(new_frame);
+    poke |= more_wanted;
+  }
+  if (new_frame && !streamed) {  // nobody streams this frame: its debug output is not for anyone
+    pending_.lines.clear();
+    pending_.stop.clear();
+    pending_dropped_ = 0;
+  }
+  for (auto& r : replies_) {
+    LoopMessage m;
+    m.reply = std::move(r);
+    x_.to_server.try_push(m);  // room was made sure of above
+  }
+  poke |= applied;
+  if (poke && x_.wake_fd >= 0) {
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const auto n = ::write(x_.wake_fd, &one, sizeof one);
+  }
+}
+
+RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file) {
+  RobotState s;
+  s.robot = robot;
+  const auto& info = rt.representation<FrameInfo>();
+  s.period = info.period;
+  s.frame = info.frame;
+  s.time = info.time;
+  s.representations = rt.representation_names();
+  for (const auto& rep : s.representations) {
+    s.providers.push_back(rt.provider_of(rep));
+    s.available.push_back(rt.providers_available(rep));
+  }
+  s.parameter_modules = rt.parameter_modules();
+  const auto& times = rt.representation<ModuleTimes>();
+  s.module_order = times.modules;
+  s.module_ns = times.ns;
+  for (const auto& [name, state] : rt.debug_requests()) {
+    s.debug_requests.push_back(name);
+    s.debug_states.emplace_back(debug_switch_name(state));
+  }
+  s.log_file = rt.logging() ? log_file : "";
+  s.log_frames = rt.logged_frames();
+  return s;
+}
+
+}  // namespace stride::debug

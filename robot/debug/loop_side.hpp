@@ -1,0 +1,68 @@
+#pragma once
+// The control loop's half of the debug server: at each frame boundary it applies the requests that
+// change the robot (set, mr, dr, log start/stop) exactly as a console command between frames, and
+// publishes a snapshot of the slots the server's clients want. Bounded work per frame; it never
+// waits for the server thread.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "robot/debug/exchange.hpp"
+#include "robot/runtime/runtime.hpp"
+
+namespace stride::debug {
+
+// What the runtime's debug requests printed (lines) and the first request to pause ("" none).
+struct DebugText {
+  std::vector<std::string> lines;
+  std::string stop;
+};
+
+class LoopSide final : public FrameBoundary {
+ public:
+  // The loop side takes the runtime's debug output after every frame and streams it to the
+  // subscribed clients. `keep_debug_output`: the loop's own console shows it too (`serve` in a
+  // console), so it is also kept for take_kept_debug_output().
+  LoopSide(Exchange& exchange, std::string robot_name, bool keep_debug_output = false);
+  void after_frame(Runtime& runtime) override { service(runtime, true); }
+  // Between frames while the loop is paused (a console's `serve` while it is not running).
+  void idle(Runtime& runtime) { service(runtime, false); }
+
+  // The debug output taken from the runtime since the last call (with keep_debug_output).
+  DebugText take_kept_debug_output();
+
+  static constexpr int kRequestsPerFrame = 16;
+  static constexpr std::size_t kMaxHeldLines = 1000;  // per client stream; more are counted
+
+ private:
+  void service(Runtime& rt, bool new_frame);
+  void refresh_catalogue(Runtime& rt);
+  LoopReply apply(Runtime& rt, LoopRequest& r);
+  bool wanted_changed();
+  bool publish(bool new_frame);
+  void take_debug_output(Runtime& rt);
+  bool push_catalogue();
+
+  Exchange& x_;
+  std::string robot_;
+  const Runtime* runtime_ = nullptr;
+  std::uint64_t plan_generation_ = 0;
+  std::uint64_t generation_ = 0;
+  std::shared_ptr<const Catalogue> pending_catalogue_;  // not yet taken by the ring
+  std::vector<const Slot*> slots_;
+  const FrameInfo* frame_info_ = nullptr;
+  std::array<std::uint64_t, kMaxSlots / 64> wanted_{};  // bits of the last published snapshot
+  std::string log_file_;
+  std::vector<LoopReply> replies_;  // of this boundary, sent after its snapshot
+  DebugText pending_;               // to go with the next snapshot streamed
+  std::uint64_t pending_dropped_ = 0;
+  bool keep_ = false;
+  DebugText kept_;
+  std::uint64_t kept_dropped_ = 0;
+};
+
+// Everything `list` and `report` show, read from the runtime between frames.
+RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file);
+
+}  // namespace stride::debug

@@ -1,0 +1,16 @@
+#pragma once
+// Something that acts between two frames of a Runtime (e.g. the debug server's exchange): called
+// at the end of every Runtime::step(), after the actuators were written and the frame logged, so
+// whatever it changes (parameters, providers, logs) takes effect from the next frame on, exactly
+// as a console command between frames does.
+namespace stride {
+
+class Runtime;
+
+class FrameBoundary {
+ public:
+  virtual ~FrameBoundary() = default;
+  virtual void after_frame(Runtime& runtime) = 0;
+};
+
+}  // namespace stride
