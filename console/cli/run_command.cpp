@@ -104,6 +104,9 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     console::add_parameter_overrides(description, overrides, "stride run: --set");
     console::SimSession session(lola_scene(std::move(description), lola));
     auto& sim = session.simulation();
+    for (int i = 0; i < sim.robot_count(); ++i)
+      if (const Runtime* rt = session.runtime(i))
+        for (const std::string& note : console::parameter_notes(*rt)) out << "note: " << note << "\n";
     if (!log.empty()) {
       if (!session.runtime(0)) throw Error("stride run: --log: robot 0 has no <controller>");
       session.runtime(0)->start_log(log);

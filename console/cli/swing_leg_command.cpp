@@ -19,6 +19,7 @@
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/framework/enum_names.hpp"
+#include "robot/nao/nao_dimensions.hpp"
 
 namespace stride::cli {
 namespace {
@@ -30,9 +31,9 @@ std::string controller_name(Controller c) {
 }
 
 // A torque no NAO joint can give is flagged beside the figure: the motors' largest stall torque
-// at the joint (hip roll, nao-facts.md) with margin.
+// at the joint with margin.
 std::string torque_note(double torque) {
-  constexpr double kLargestStall = 13.1;  // N m
+  constexpr double kLargestStall = nao::kLargestStallTorque;
   if (torque <= 2 * kLargestStall) return "";
   std::ostringstream s;
   s << "  (!) " << std::setprecision(3) << torque / kLargestStall

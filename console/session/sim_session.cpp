@@ -1,6 +1,7 @@
 #include "console/session/sim_session.hpp"
 
 #include "behaviours/module_catalogue.hpp"
+#include "behaviours/parameter_notes.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
 #include "robot/runtime/controller_schedule.hpp"
@@ -28,6 +29,14 @@ sim::SceneDescription load(const std::string& path, std::optional<std::uint64_t>
   return s;
 }
 }  // namespace
+
+std::vector<std::string> parameter_notes(const Runtime& runtime) {
+  std::vector<std::string> notes;
+  for (const std::string& module : runtime.module_order())
+    if (const Slot* p = runtime.parameters_of(module))
+      for (std::string& n : behaviours::parameter_notes(module, *p)) notes.push_back(std::move(n));
+  return notes;
+}
 
 SimSession::SimSession(const std::string& scene_path, std::optional<std::uint64_t> seed,
                        const std::vector<ParameterOverride>& overrides)

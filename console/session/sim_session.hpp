@@ -21,6 +21,10 @@ void add_parameter_overrides(sim::SceneDescription& scene,
                              const std::vector<ParameterOverride>& overrides,
                              const std::string& what);
 
+// Notes on the parameters of `runtime`'s running modules that no NAO could use, one line each
+// ("PatternWalk: T_stride = 0.01 s: ..."; behaviours/parameter_notes.hpp).
+std::vector<std::string> parameter_notes(const Runtime& runtime);
+
 class SimSession {
  public:
   // Loads the scene and builds its controllers; throws stride::Error and builds nothing on error.

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "robot/core/error.hpp"
 
@@ -108,17 +109,26 @@ Plan expand(const SweepSpec& spec, std::size_t max_runs) {
   Columns columns;
   columns.index("scene");
   std::vector<std::vector<Point>> blocks;
-  std::size_t total = 0;
+  double total = 0;
   for (const Block& b : spec.blocks) {
+    // Counted before the points are built: two factors of 100000 levels are 1e10 points, which
+    // would exhaust memory long before the cap below could refuse them.
+    double points = b.kind == Block::Kind::Grid ? 1 : b.count;
+    if (b.kind == Block::Kind::Grid)
+      for (const Factor& f : b.factors) points *= static_cast<double>(f.levels.size());
+    total += points * static_cast<double>(spec.seeds.size());
+    if (total > static_cast<double>(max_runs)) {
+      std::ostringstream why;
+      why << "sweep '" << spec.name << "': " << total << " runs (levels times seeds), more than the "
+          << max_runs << " a sweep may have";
+      throw Error(why.str());
+    }
     blocks.push_back(b.kind == Block::Kind::Grid ? grid_points(b) : sampled_points(b));
     for (Point& p : blocks.back()) {
       p.settings.insert(p.settings.begin(), b.settings.begin(), b.settings.end());
       p.cells.insert(p.cells.begin(), b.columns.begin(), b.columns.end());
       for (const auto& [name, text] : p.cells) columns.index(name);
     }
-    total += blocks.back().size() * spec.seeds.size();
-    if (total > max_runs)
-      throw Error("sweep '" + spec.name + "': more than " + std::to_string(max_runs) + " runs");
   }
   if (blocks.empty()) blocks.push_back({Point{}});
   const std::size_t seed_column = columns.index("seed");

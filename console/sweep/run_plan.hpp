@@ -21,8 +21,9 @@ struct Plan {
   std::vector<RunPlan> runs;
 };
 
-// Throws stride::Error when the sweep has no runs or more than `max_runs`.
-Plan expand(const SweepSpec& spec, std::size_t max_runs = 10'000'000);
+// Throws stride::Error when the sweep has no runs or more than `max_runs` (by default a million:
+// days of computing even at a second a run, so more is a typing mistake).
+Plan expand(const SweepSpec& spec, std::size_t max_runs = 1'000'000);
 
 // The number in a level or range's value text: "{}" in `format` replaced by the shortest text
 // that reads back to `v`.

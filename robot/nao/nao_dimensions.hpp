@@ -36,6 +36,10 @@ inline const std::array<Eigen::Vector2d, 8> kFsrPositions = {
 
 inline constexpr double kFsrMaxForce = 25.0;  // N per sensor (thesis Sec. 6.3)
 
+// The largest torque any NAO leg joint's motor gives (stall at the joint: hip yaw-pitch, hip roll,
+// ankle roll; nao-facts.md), N m. Figures far beyond it come from a typed mistake, not a robot.
+inline constexpr double kLargestStallTorque = 13.1;
+
 // Thesis' standing posture: knees slightly bent so the servos are not at the stretched limit.
 inline constexpr double kStandHipPitch = -0.30;
 inline constexpr double kStandKneePitch = 0.60;

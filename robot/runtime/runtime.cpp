@@ -344,6 +344,11 @@ std::vector<std::string> Runtime::parameter_modules() const {
   return out;
 }
 
+const Slot* Runtime::parameters_of(std::string_view module) const {
+  const auto it = parameters_.find(module);
+  return it == parameters_.end() ? nullptr : it->second.get();
+}
+
 std::vector<std::pair<std::string, DebugSwitch>> Runtime::debug_requests() const {
   std::vector<std::pair<std::string, DebugSwitch>> out;
   for (std::size_t i = 0; i < debug_.names.size(); ++i)

@@ -71,6 +71,8 @@ class Runtime {
   const TypeDesc& type_of(std::string_view key) const;
   std::vector<std::string> representation_names() const;  // blackboard order
   std::vector<std::string> parameter_modules() const;
+  // The parameters `module` runs with (typed access: slot_value), or nullptr if it has none.
+  const Slot* parameters_of(std::string_view module) const;
 
   // Debug requests: named switches modules register and test with DebugRequest::on().
   std::vector<std::pair<std::string, DebugSwitch>> debug_requests() const;

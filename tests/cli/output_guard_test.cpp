@@ -1,4 +1,5 @@
 // `stride` commands refuse bad output paths, absurd durations and huge sweeps before they run,
+// flag legal but absurd parameters and torques,
 // create nothing outside what was named, and quote at most ~80 characters of bad input. Each
 // test starts the real program from a temporary folder outside the checkout.
 #include <gtest/gtest.h>
@@ -112,6 +113,46 @@ TEST(Plausibility, ALegalButAbsurdStrideIsFlagged) {
       {"pattern", "--preset", "medium", "--set", "T_stride=0.01", "--csv", "p.csv"}, dir.path());
   EXPECT_NE(fast.out.find("note: T_stride = 0.01 s: no NAO strides that fast"), std::string::npos)
       << fast.out << fast.err;
+}
+
+// `stride run` flags legal but absurd module parameters before it runs, one note each, and says
+// nothing about the shipped scenes' own values.
+TEST(Plausibility, AbsurdParametersOfARunAreFlagged) {
+  TempFolder dir;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"scenes/walking/open_loop_medium.xml", "PatternWalk.T_stride=0.01"},
+       "note: PatternWalk: T_stride = 0.01 s: no NAO strides that fast"},
+      {{"scenes/swing_leg/hanging_nao.xml", "SwingLegTracking.kd=500"},
+       "note: SwingLegTracking: lambda = 20 1/s, kd = 500 N m s/rad: an error of 0.1 rad and 1 "
+       "rad/s asks for 1500 N m, 115 x the largest NAO joint's stall torque (13.1 N m;"},
+      {{"scenes/push/stand_balance.xml", "AnkleBalance.kp=10000"},
+       "note: AnkleBalance: kp = 10000 1/s^2: a closed-loop frequency of 100 rad/s, faster than a "
+       "10 ms control loop follows (plausible up to 2500; Fig. 7.5 uses 72)"},
+      {{"scenes/experiments/hip_medium.xml", "HipStrategy.kd_roll=-0.9"},
+       "note: HipStrategy: kd_roll = -0.9 s: plausible |kd| up to 0.3 s"}};
+  for (const auto& [scene_and_set, note] : cases) {
+    const std::string scene = source_file(scene_and_set[0]);
+    const Finished plain = run_stride({"run", scene, "--seconds", "0.01"}, dir.path());
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    EXPECT_EQ(plain.out.find("note:"), std::string::npos) << plain.out;
+    const Finished absurd =
+        run_stride({"run", scene, "--seconds", "0.01", "--set", scene_and_set[1]}, dir.path());
+    ASSERT_EQ(absurd.exit_code, 0) << absurd.err;
+    EXPECT_NE(absurd.out.find(note), std::string::npos) << absurd.out;
+  }
+}
+
+// The swing-leg study's App. C leg at the thesis' gains (lambda 200, K_D 100) asks for 20 kN m at
+// the step's start: the figure is printed with its ratio to what a NAO motor gives.
+TEST(Plausibility, ASwingLegTorqueOfTwentyKilonewtonMetresIsFlagged) {
+  TempFolder dir;
+  const Finished r = run_stride(
+      {"swing-leg", "planar-step", "--controller", "pd", "--seconds", "0.05"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("max |tau| 20944.0 N m  (!) 1.6e+03 x the largest NAO joint's stall "
+                       "torque (13.1 N m)"),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace
