@@ -96,23 +96,27 @@ TEST(SweepParser, BlocksAreUnionedAndSamplesAreSeededAndStratified) {
   EXPECT_EQ(expand(s).runs[7].cells, p.runs[7].cells);  // the same draw every time
 }
 
-// Two factors of 100000 levels each are legal one by one, but their grid (1e10 runs) is refused
-// before any point is built; the count is in the message.
+// Two factors of 2000 and 1000 levels are legal one by one, but their grid (2e6 runs) is refused
+// before any point is built (two of 100000 levels would exhaust memory); the count is in the
+// message.
 TEST(SweepParser, AGridBeyondAMillionRunsIsRefusedBeforeItIsBuilt) {
   const SweepSpec s = parse(R"(<scene file="a.xml"/>
-<factor name="kp" target="HipStrategy.kp_pitch" range="0:99999:1"/>
-<factor name="kd" target="HipStrategy.kd_pitch" range="0:99999:1"/>)");
+<factor name="kp" target="HipStrategy.kp_pitch" range="0:1999:1"/>
+<factor name="kd" target="HipStrategy.kd_pitch" range="0:999:1"/>
+<run seconds="1s"/>)");
   EXPECT_EQ(error_of([&] { expand(s); }),
-            "sweep 't': 1e+10 runs (levels times seeds), more than the 1000000 a sweep may have");
+            "sweep 't': 2e+06 runs (levels times seeds), more than the 1000000 a sweep may have");
   const SweepSpec seeded = parse(R"(<scene file="a.xml"/>
 <factor name="kp" target="HipStrategy.kp_pitch" range="0:999:1"/>
-<seeds from="1" to="1001"/>)");
+<seeds from="1" to="1001"/>
+<run seconds="1s"/>)");
   EXPECT_EQ(error_of([&] { expand(seeded); }),
             "sweep 't': 1.001e+06 runs (levels times seeds), more than the 1000000 a sweep may "
             "have");
   const SweepSpec small = parse(R"(<scene file="a.xml"/>
 <factor name="kp" target="HipStrategy.kp_pitch" range="0:3:1"/>
-<seeds from="1" to="3"/>)");
+<seeds from="1" to="3"/>
+<run seconds="1s"/>)");
   EXPECT_EQ(expand(small, 12).runs.size(), 12u);
   EXPECT_EQ(error_of([&] { expand(small, 11); }),
             "sweep 't': 12 runs (levels times seeds), more than the 11 a sweep may have");
