@@ -106,7 +106,8 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     auto& sim = session.simulation();
     for (int i = 0; i < sim.robot_count(); ++i)
       if (const Runtime* rt = session.runtime(i))
-        for (const std::string& note : console::parameter_notes(*rt)) out << "note: " << note << "\n";
+        for (const std::string& note : console::parameter_notes(*rt))
+          out << "note: " << note << "\n";
     if (!log.empty()) {
       if (!session.runtime(0)) throw Error("stride run: --log: robot 0 has no <controller>");
       session.runtime(0)->start_log(log);

@@ -119,8 +119,8 @@ Plan expand(const SweepSpec& spec, std::size_t max_runs) {
     total += points * static_cast<double>(spec.seeds.size());
     if (total > static_cast<double>(max_runs)) {
       std::ostringstream why;
-      why << "sweep '" << spec.name << "': " << total << " runs (levels times seeds), more than the "
-          << max_runs << " a sweep may have";
+      why << "sweep '" << spec.name << "': " << total
+          << " runs (levels times seeds), more than the " << max_runs << " a sweep may have";
       throw Error(why.str());
     }
     blocks.push_back(b.kind == Block::Kind::Grid ? grid_points(b) : sampled_points(b));
