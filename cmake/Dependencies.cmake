@@ -33,7 +33,9 @@ if(STRIDE_BENCH)
   find_package(benchmark REQUIRED)
 endif()
 # Optional: OpenMPI for sweeps across machines (Debian libopenmpi-dev, openmpi-bin).
-find_package(MPI COMPONENTS C)
+if(STRIDE_MPI)
+  find_package(MPI COMPONENTS C)
+endif()
 # Header and library found directly: Debian's mujocoConfig.cmake (2.2.2) names a qhull include
 # directory that the C API does not need.
 if(STRIDE_MUJOCO)

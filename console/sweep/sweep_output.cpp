@@ -154,9 +154,17 @@ void SweepOutput::append(int fd, const std::string& text, const std::string& wha
   }
 }
 
-void SweepOutput::add(const RunRow& row, int worker) {
-  if (!row.trace_csv.empty())
-    write_file("traces/run-" + std::to_string(row.run) + ".csv", row.trace_csv);
+// A trace that cannot be written fails its run, saying why, and the sweep goes on: one bad path
+// must not end an overnight sweep. runs.csv or timing.csv failing does end it (nothing records).
+void SweepOutput::add(RunRow& row, int worker) {
+  if (!row.trace_csv.empty()) {
+    try {
+      write_file("traces/run-" + std::to_string(row.run) + ".csv", row.trace_csv);
+    } catch (const Error& e) {
+      row.ok = false;
+      row.reason = std::string("trace not written: ") + e.what();
+    }
+  }
   std::vector<std::string> cells = sweep_.csv_cells(row);
   append(runs_fd_, csv_line(cells), "runs.csv");
   append(timing_fd_,
@@ -181,11 +189,19 @@ void SweepOutput::write_file(const std::string& name, const std::string& text) c
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw Error("cannot write '" + tmp.string() + "'");
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(tmp, ignored);  // no half-written file left behind
+      throw Error("cannot write '" + tmp.string() + "'");
+    }
   }
   std::error_code ec;
   fs::rename(tmp, p, ec);
-  if (ec) throw Error("cannot write '" + p.string() + "': " + ec.message());
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw Error("cannot write '" + p.string() + "': " + ec.message());
+  }
 }
 
 }  // namespace stride::sweep

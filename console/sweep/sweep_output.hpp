@@ -36,8 +36,9 @@ class SweepOutput {
   // Rows already there (resume), by run id, as CSV cells.
   const std::map<std::int64_t, std::vector<std::string>>& rows() const { return rows_; }
 
-  // Appends the run's CSV row (and its trace and timing) with one write each, flushed.
-  void add(const RunRow& row, int worker);
+  // Appends the run's CSV row (and its trace and timing) with one write each, flushed; a trace
+  // it cannot write turns the row into a failed one.
+  void add(RunRow& row, int worker);
   // Rewrites runs.csv sorted by run id (through a temporary file and a rename).
   void sort_rows();
   // Writes <dir>/<name> whole, through a temporary file and a rename.
