@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <exception>
 #include <numeric>
 #include <set>
 
@@ -172,25 +173,49 @@ class Compiler {
 };
 
 // Loads each scene of `runs` once, with the settings of the first run that uses it, and binds
-// every key.
-void check_scenes(const Sweep& sweep, const Sweep::Compiled& c,
-                  const std::vector<std::size_t>& runs) {
+// every key. A scene that does not load is noted, not thrown, while another one loads: its runs
+// become failed rows saying why, as an overnight sweep over robot variants needs. A key that
+// does not bind is a mistake in the sweep file and throws.
+std::vector<std::string> check_scenes(const Sweep& sweep, const Sweep::Compiled& c,
+                                      const std::vector<std::size_t>& runs) {
   const SweepSpec& s = sweep.spec();
   std::set<std::string> seen;
+  std::vector<std::string> unloadable;
+  std::exception_ptr first_load_error;  // kept whole: its kind (bad input, usage) sets the exit
+  std::string first_prefix;
+  bool loaded = false;
   for (std::size_t i : runs) {
     const RunPlan& run = sweep.plan().runs.at(i);
     const std::string scene = scene_path_of(s, run);
     if (!seen.insert(scene).second) continue;
+    std::unique_ptr<console::SimSession> session;
     try {
-      auto session = build_run_session(s, run);
+      session = build_run_session(s, run);
+    } catch (const Error& e) {
+      const std::string prefix = "run " + std::to_string(run.id) + ": ";
+      unloadable.push_back(prefix + e.what());
+      if (!first_load_error) {
+        first_load_error = std::current_exception();
+        first_prefix = prefix;
+      }
+      continue;
+    }
+    try {
       if (session->simulation().robot_count() == 0) throw Error(scene + ": the scene has no robot");
       std::optional<console::WalkFrameObserver> walk;
       if (c.walk_frame) walk.emplace(*session);
       FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys);
+      loaded = true;
     } catch (const Error& e) {
       rethrow_at(s, "run " + std::to_string(run.id) + ": ", e);
     }
   }
+  if (!loaded && first_load_error) try {
+      std::rethrow_exception(first_load_error);
+    } catch (const Error& e) {
+      rethrow_at(s, first_prefix, e);
+    }
+  return unloadable;
 }
 
 }  // namespace
@@ -224,8 +249,9 @@ Sweep::Sweep(SweepSpec spec, bool scenes) : spec_(std::move(spec)), compiled_(ne
   check_scenes(all);
 }
 
-void Sweep::check_scenes(const std::vector<std::size_t>& runs) const {
-  stride::sweep::check_scenes(*this, *compiled_, runs);
+const std::vector<std::string>& Sweep::check_scenes(const std::vector<std::size_t>& runs) {
+  unloadable_ = stride::sweep::check_scenes(*this, *compiled_, runs);
+  return unloadable_;
 }
 
 Sweep::~Sweep() = default;

@@ -21,7 +21,7 @@ class Sweep {
  public:
   // Throws stride::Error ("file:line: ..." for specs from a file) and builds nothing on error.
   // `check_scenes` also loads each scene once with its first run's settings, so a bad key or
-  // setting is found before any run.
+  // setting is found before any run (a scene that does not load, see check_scenes).
   explicit Sweep(SweepSpec spec, bool check_scenes = true);
   ~Sweep();
   Sweep(Sweep&&) noexcept;
@@ -37,8 +37,11 @@ class Sweep {
   bool column_is_text(const std::string& name) const;
 
   // The scene check of the constructor for the plan indices `runs` only (a filtered sweep needs
-  // only its own scenes).
-  void check_scenes(const std::vector<std::size_t>& runs) const;
+  // only its own scenes). Returns one line per scene that does not load ("run N: file:line:
+  // ..."): its runs will be failed rows. Throws when no scene loads, or a key does not bind.
+  const std::vector<std::string>& check_scenes(const std::vector<std::size_t>& runs);
+  // What the last check returned.
+  const std::vector<std::string>& unloadable_scenes() const { return unloadable_; }
 
   // Runs plan().runs[index].
   RunRow run(std::size_t index) const;
@@ -50,6 +53,7 @@ class Sweep {
   Plan plan_;
   std::vector<RecordColumn> record_;
   std::unique_ptr<Compiled> compiled_;
+  std::vector<std::string> unloadable_;
 };
 
 // The scene file a run loads: its last "scene" setting against the sweep's scene directory.

@@ -173,6 +173,72 @@ TEST(SweepEngine, AnUnwritableOutputIsRefusedBeforeAnyRun) {
   EXPECT_EQ(runs, 0);
 }
 
+TEST(SweepEngine, ARunWhoseTraceCannotBeWrittenIsAFailedRowAndTheSweepGoesOn) {
+  const Sweep s = standing_sweep();
+  const fs::path out = fresh_dir("trace");
+  fs::create_directories(out / "traces" / "run-1.csv");  // a directory where run 1's trace goes
+  // Each run ends ok with five record cells and a two-line trace (no physics needed here).
+  const RunFunction traced = [](std::size_t i) {
+    RunRow row;
+    row.run = static_cast<std::int64_t>(i);
+    row.ok = true;
+    row.cells = {"h", "0.3", "0", "30", "300"};
+    row.trace_csv = "t\n" + std::to_string(i) + "\n";
+    return row;
+  };
+  const SweepResult r = run(s, *in_process_executor(), out, traced);
+  ASSERT_TRUE(r.complete);
+  EXPECT_EQ(r.failed, 1u);
+  EXPECT_EQ(r.rows[0][4], "ok");
+  EXPECT_EQ(r.rows[1][4], "failed");
+  EXPECT_EQ(r.rows[1][5], "");  // a failed row carries no record values
+  EXPECT_EQ(r.rows[1].back().rfind("trace not written: cannot write '", 0), 0u) << r.rows[1].back();
+  EXPECT_EQ(r.rows[2][4], "ok");
+  EXPECT_EQ(r.rows[3][4], "ok");
+  EXPECT_EQ(read(out / "traces" / "run-3.csv"), "t\n3\n");
+  EXPECT_FALSE(fs::exists(out / "traces" / "run-1.csv.tmp"));  // nothing half-written left
+  EXPECT_NE(read(out / "runs.csv").find("\n1,"), std::string::npos);
+  fs::remove_all(out);
+}
+
+// A sweep over scenes where one robot cannot be simulated (a URDF inertia ODE would abort on):
+// the sweep is not refused, its runs are failed rows with the loader's file:line, the others run.
+// A sweep whose every scene fails to load is refused before any run.
+TEST(SweepEngine, ASceneThatDoesNotLoadGivesFailedRowsWhileAnotherLoads) {
+  const auto sweep_of = [](const std::string& levels) {
+    return Sweep(parse_sweep_text(R"(<sweep name="mixed" scenes="../../scenes">
+  <scene file="nao_stand_controlled.xml"/>
+  <factor name="robot">)" + levels + R"(</factor>
+  <seeds from="1" to="2"/>
+  <run seconds="0.05"/>
+  <record><value name="z" key="frame.torso_z"/></record>
+</sweep>)",
+                                 std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/mixed.sweep.xml"));
+  };
+  const std::string broken =
+      R"(<level label="broken"><set target="scene" value="hostile/broken_urdf.xml"/></level>)";
+  const Sweep s = sweep_of(R"(<level label="nao"><set target="scene" value="nao_stand_controlled.xml"/></level>)" +
+                           broken);
+  ASSERT_EQ(s.unloadable_scenes().size(), 1u);
+  const std::string note = s.unloadable_scenes()[0];
+  EXPECT_EQ(note.rfind("run 2: ", 0), 0u) << note;
+  EXPECT_NE(note.find("scenes/hostile/broken_urdf.xml:7: <robot name=\"arm\">"), std::string::npos)
+      << note;
+  const fs::path out = fresh_dir("mixed");
+  const SweepResult r = run(s, *in_process_executor(), out);
+  ASSERT_TRUE(r.complete);
+  EXPECT_EQ(r.failed, 2u);
+  EXPECT_EQ(r.rows[0][4], "ok");
+  EXPECT_EQ(r.rows[1][4], "ok");
+  EXPECT_EQ(r.rows[2][4], "failed");
+  EXPECT_NE(r.rows[3].back().find("inertia violates the triangle inequality"), std::string::npos)
+      << r.rows[3].back();
+  fs::remove_all(out);
+  const std::string e = error_of([&] { sweep_of(broken); });
+  EXPECT_EQ(e.rfind("sweep 'mixed': run 0: ", 0), 0u) << e;
+  EXPECT_NE(e.find("inertia violates the triangle inequality"), std::string::npos) << e;
+}
+
 TEST(SweepEngine, UnknownKeysAndColumnsAreFoundBeforeAnyRun) {
   const auto load = [](const std::string& record) {
     return error_of([&] {
