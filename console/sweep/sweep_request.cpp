@@ -64,8 +64,8 @@ SweepResult run_here(const SweepRequest& r, const Sweep& sweep, Executor& execut
   o.stop = [&] { return InterruptGuard::interrupted() || (r.options.stop && r.options.stop()); };
   // Printed even with --quiet: these runs will be failed rows, which a user must not miss.
   for (const std::string& scene : sweep.unloadable_scenes())
-    err << "sweep " << sweep.spec().name << ": warning: scene does not load, its runs will fail: "
-        << scene << "\n";
+    err << "sweep " << sweep.spec().name
+        << ": warning: scene does not load, its runs will fail: " << scene << "\n";
   if (!r.quiet)
     err << "sweep " << sweep.spec().name << ": " << sweep.plan().runs.size() << " runs planned, "
         << executor.describe() << (o.out_dir.empty() ? "" : ", output " + o.out_dir) << "\n";

@@ -213,12 +213,13 @@ TEST(SweepEngine, ASceneThatDoesNotLoadGivesFailedRowsWhileAnotherLoads) {
   <run seconds="0.05"/>
   <record><value name="z" key="frame.torso_z"/></record>
 </sweep>)",
-                                 std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/mixed.sweep.xml"));
+                                  std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/mixed.sweep.xml"));
   };
   const std::string broken =
       R"(<level label="broken"><set target="scene" value="hostile/broken_urdf.xml"/></level>)";
-  const Sweep s = sweep_of(R"(<level label="nao"><set target="scene" value="nao_stand_controlled.xml"/></level>)" +
-                           broken);
+  const Sweep s = sweep_of(
+      R"(<level label="nao"><set target="scene" value="nao_stand_controlled.xml"/></level>)" +
+      broken);
   ASSERT_EQ(s.unloadable_scenes().size(), 1u);
   const std::string note = s.unloadable_scenes()[0];
   EXPECT_EQ(note.rfind("run 2: ", 0), 0u) << note;
