@@ -11,11 +11,6 @@ Eigen::Vector3d v3(const mjtNum* p) {
   return Eigen::Vector3d(p[0], p[1], p[2]);
 }
 
-// The motor's gain per unit of the dof's own inertia: the servo closes a third of its speed
-// error per step on a lone joint, stable whatever the coupling since MuJoCo's Euler step takes
-// dof damping implicitly.
-constexpr double kGainPerInertia = 0.5;
-
 }  // namespace
 
 MjRobotBody::MjRobotBody(MjWorld& world, const model::RobotModel& model, int slot)
@@ -76,18 +71,17 @@ double MjRobotBody::joint_velocity(int j) const {
   return v >= 0 ? world_.data()->qvel[v] : 0.0;
 }
 
-// The motor's torque over the last step (its implicit part at the step's end velocity) plus
-// what the joint's limit rows applied.
+// What the motor's row and the joint's limit rows applied over the last step.
 double MjRobotBody::joint_constraint_torque(int j) const {
   const int v = dof(j);
   if (v < 0) return 0;
   const mjModel* m = world_.model();
   const mjData* d = world_.data();
-  const MjMotor& mo = world_.motor(v);
-  double tau = mo.servo_force - mo.gain * d->qvel[v];
   const int id = world_.layout(slot_).jnt[j];
+  double tau = 0;
   for (int row = 0; row < d->nefc; ++row)
-    if (d->efc_type[row] == mjCNSTR_LIMIT_JOINT && d->efc_id[row] == id)
+    if ((d->efc_type[row] == mjCNSTR_LIMIT_JOINT && d->efc_id[row] == id) ||
+        (d->efc_type[row] == mjCNSTR_FRICTION_DOF && d->efc_id[row] == v))
       tau += d->efc_force[row] * d->efc_J[row * m->nv + v];
   return tau;
 }
@@ -100,24 +94,10 @@ void MjRobotBody::set_motor_softness(int, double) {
   throw Error("mujoco: a compliant (spring) servo has no MuJoCo counterpart");
 }
 
-// The servo drives the joint toward its speed as ODE's motor row does, with at most max_torque.
-// While the torque that the speed error asks for, gain * (speed - qd), stays within the bound,
-// it is the dof damping `gain` (implicit) plus gain * speed; beyond it, the bound itself.
+// The bound of the motor's row (MjWorld::retarget_motor_rows); zero leaves the joint free.
 void MjRobotBody::set_motor_max_torque(int j, double max_torque) {
   const int v = dof(j);
-  MjMotor& mo = world_.motor(v);
-  const mjModel* m = world_.model();
-  const double inertia = world_.data()->qM[m->dof_Madr[v]];
-  const double gain = kGainPerInertia * inertia / m->opt.timestep;
-  const double wanted = gain * (mo.speed - world_.data()->qvel[v]);
-  mo.max_torque = max_torque;
-  if (std::abs(wanted) <= max_torque) {
-    mo.gain = gain;
-    mo.servo_force = gain * mo.speed;
-  } else {
-    mo.gain = 0;
-    mo.servo_force = std::copysign(max_torque, wanted);
-  }
+  world_.motor(v).max_torque = max_torque;
   world_.apply_motor(v);
 }
 

@@ -105,14 +105,27 @@ void MjWorld::compile() {
 
 void MjWorld::apply_motor(int dof) {
   const MjMotor& mo = motors_[dof];
-  model_->dof_damping[dof] = mo.gain;
-  data_->qfrc_applied[dof] = mo.servo_force + mo.extra_torque;
+  model_->dof_frictionloss[dof] = mo.max_torque;
+  data_->qfrc_applied[dof] = mo.extra_torque;
+}
+
+// A dof's friction-loss row is a velocity constraint bounded by the friction loss, solved with
+// the contacts; MuJoCo aims it at zero velocity. Aiming it at the motor's speed within one step,
+// as ODE's motor row does, makes it that motor: whatever load the contacts put on the joint, the
+// servo holds its speed up to its torque bound.
+void MjWorld::retarget_motor_rows() {
+  for (int row = 0; row < data_->nefc; ++row)
+    if (data_->efc_type[row] == mjCNSTR_FRICTION_DOF)
+      data_->efc_aref[row] =
+          (motors_[data_->efc_id[row]].speed - data_->efc_vel[row]) / model_->opt.timestep;
 }
 
 void MjWorld::step() {
   if (dirty_) compile();
   const double before = data_->time;
-  mj_step(model_, data_);
+  mj_step1(model_, data_);
+  retarget_motor_rows();
+  mj_step2(model_, data_);
   if (!(data_->time > before)) data_->warning[mjWARN_BADQACC].number += 1;  // it reset itself
   for (int w : {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS})
     if (data_->warning[w].number > 0) {

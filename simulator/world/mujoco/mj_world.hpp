@@ -1,6 +1,6 @@
 #pragma once
 // The MuJoCo world: the scene's static geoms and robots compiled into one mjModel (MJCF written
-// from our own parsed data, loaded through MuJoCo's virtual file system), stepped by mj_step.
+// from our own parsed data, loaded through MuJoCo's virtual file system), stepped by mj_step1/mj_step2 with the motors' rows retargeted in between.
 // Adding a robot recompiles; every robot then starts again from its initial configuration, which
 // only happens while a scene is being built.
 #include <memory>
@@ -21,11 +21,11 @@ struct MjRobotLayout {
   int dof_begin = 0, dof_end = 0;    // and of qvel
 };
 
-// A velocity motor on one dof (see MjRobotBody::set_motor_max_torque).
+// A velocity motor on one dof: ODE's motor row, a velocity constraint toward `speed` whose torque
+// is bounded by `max_torque`, realised as the dof's friction-loss row retargeted to that speed
+// (MjWorld::step).
 struct MjMotor {
   double speed = 0, max_torque = 0;
-  double gain = 0;          // N m s/rad, implicit in MuJoCo's Euler step as dof damping
-  double servo_force = 0;   // the explicit part this step
   double extra_torque = 0;  // direct joint torque, cleared after each step
 };
 
@@ -49,12 +49,13 @@ class MjWorld : public PhysicsWorld {
   const MjRobotLayout& layout(int slot) const { return layouts_[slot]; }
   MjMotor& motor(int dof) { return motors_[dof]; }
   const MjMotor& motor(int dof) const { return motors_[dof]; }
-  // Writes dof damping and qfrc_applied for `dof` from its motor.
+  // Writes the dof's friction-loss bound and qfrc_applied for `dof` from its motor.
   void apply_motor(int dof);
 
  private:
   void compile();
   void record_contacts();
+  void retarget_motor_rows();
 
   GroundSettings ground_;
   std::vector<StaticBox> boxes_;

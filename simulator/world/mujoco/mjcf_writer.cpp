@@ -62,12 +62,14 @@ std::string inertial(const model::Inertial& in) {
          num(i(0, 2)) + " " + num(i(1, 2)) + "\"/>";
 }
 
+// The joint's friction-loss row carries its motor (MjWorld::retarget_motor_rows): at MuJoCo's
+// largest impedance it is as rigid as ODE's motor row, which reaches its speed within one step.
 void write_joint(std::ostream& out, const model::Joint& jt, const std::string& name) {
   using model::JointType;
   if (jt.type == JointType::Fixed) return;
   out << "<joint name=\"" << name << "\" type=\""
       << (jt.type == JointType::Prismatic ? "slide" : "hinge") << "\" axis=\"" << vec(jt.axis)
-      << "\"";
+      << "\" solimpfriction=\"0.9999 0.9999 0.001\"";
   if (jt.type != JointType::Continuous)
     out << " limited=\"true\" range=\"" << num(jt.lower) << " " << num(jt.upper) << "\"";
   out << "/>";
