@@ -4,12 +4,49 @@
 #include <gtest/gtest.h>
 
 #include "robot/core/error.hpp"
+#include "robot/model/urdf_loader.hpp"
+#ifdef STRIDE_HAVE_MUJOCO
+#include "simulator/world/mujoco/mj_world.hpp"
+#endif
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {
 namespace {
 
 #ifdef STRIDE_HAVE_MUJOCO
+
+// The compiled MuJoCo model carries every NAO link's URDF mass, centre of mass and inertia tensor
+// (the ones the ODE world takes): MuJoCo stores the tensor as principal moments in a rotated
+// frame (its eigen-decomposition rounds at about 1e-8 of the tensor), and its compiler may
+// "balance" an inertia; the tensor rebuilt from them is the URDF's.
+TEST(MujocoEngine, EveryNaoLinkHasItsUrdfMassAndInertia) {
+  const model::RobotModel nao = model::load_urdf(test::source_path("scenes/robots/nao/nao.urdf"));
+  sim::MjWorld world(sim::PhysicsSettings{}, sim::GroundSettings{});
+  world.add_robot(nao, 0, Eigen::Isometry3d::Identity(),
+                  model::JointVector::Zero(static_cast<int>(nao.joints.size())));
+  const mjModel* m = world.model();
+  double total = 0;
+  for (size_t l = 0; l < nao.links.size(); ++l) {
+    const model::Inertial& in = nao.links[l].inertial;
+    if (in.mass <= 1e-6) continue;  // a massless link gets the same floor on both engines
+    const int b = world.layout(0).body[l];
+    ASSERT_GE(b, 0) << nao.links[l].name;
+    total += m->body_mass[b];
+    EXPECT_NEAR(m->body_mass[b], in.mass, 1e-12) << nao.links[l].name;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(m->body_ipos[3 * b + k], in.com[k], 1e-12) << nao.links[l].name;
+    const mjtNum* q = m->body_iquat + 4 * b;
+    const Eigen::Matrix3d r = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
+    const Eigen::Vector3d principal(m->body_inertia[3 * b], m->body_inertia[3 * b + 1],
+                                    m->body_inertia[3 * b + 2]);
+    const Eigen::Matrix3d tensor = r * principal.asDiagonal() * r.transpose();
+    EXPECT_LT((tensor - in.inertia).norm(), 1e-6 * in.inertia.norm())
+        << nao.links[l].name << ": MuJoCo\n"
+        << tensor << "\nURDF\n"
+        << in.inertia;
+  }
+  EXPECT_NEAR(total, nao.total_mass(), 1e-9);
+}
 
 // A push is a force at the link for its duration: on a free block the velocity gains the impulse
 // over the mass, to rounding, while gravity adds g t downward.

@@ -1,8 +1,9 @@
 #pragma once
 // The MuJoCo world: the scene's static geoms and robots compiled into one mjModel (MJCF written
-// from our own parsed data, loaded through MuJoCo's virtual file system), stepped by mj_step1/mj_step2 with the motors' rows retargeted in between.
-// Adding a robot recompiles; every robot then starts again from its initial configuration, which
-// only happens while a scene is being built.
+// from our own parsed data, loaded through MuJoCo's virtual file system), stepped by
+// mj_step1/mj_step2 with the motors' rows retargeted in between. Adding a robot recompiles; every
+// robot then starts again from its initial configuration, which only happens while a scene is being
+// built.
 #include <memory>
 #include <vector>
 
