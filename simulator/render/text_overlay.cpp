@@ -105,11 +105,20 @@ void draw_text(RgbaImage& image, int x, int y, std::string_view text, const Text
   }
 }
 
-void draw_overlay(RgbaImage& image, const std::vector<std::string>& lines, const TextStyle& style) {
+void draw_overlay(RgbaImage& image, const std::vector<std::string>& lines,
+                  const TextStyle& requested) {
   if (lines.empty()) return;
-  const int line_h = (kGlyphH + kLineGap) * style.scale;
+  // A line wider than the picture (a long robot name, a fall, three-digit steps) is drawn smaller
+  // rather than cut off at the edge.
+  TextStyle style = requested;
   int width = 0;
-  for (const auto& l : lines) width = std::max(width, text_width(l, style));
+  for (;;) {
+    width = 0;
+    for (const auto& l : lines) width = std::max(width, text_width(l, style));
+    if (style.scale <= 1 || width + 4 * kMargin <= image.width) break;
+    --style.scale;
+  }
+  const int line_h = (kGlyphH + kLineGap) * style.scale;
   const int box_w = width + 4 * kMargin;  // text starts 2 margins in
   const int box_h = static_cast<int>(lines.size()) * line_h + 2 * kMargin;
   if (style.backing[3] > 0)

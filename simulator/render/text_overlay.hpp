@@ -18,7 +18,8 @@ struct TextStyle {
 // Draws one line with its top-left corner at (x, y); clipped to the image.
 void draw_text(RgbaImage& image, int x, int y, std::string_view text, const TextStyle& style);
 
-// Lines stacked at the top-left corner on a shared translucent box.
+// Lines stacked at the top-left corner on a shared translucent box; at a smaller scale than
+// `style` asks where the widest line would not fit the picture.
 void draw_overlay(RgbaImage& image, const std::vector<std::string>& lines,
                   const TextStyle& style = {});
 

@@ -15,6 +15,7 @@ extern "C" {
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -385,6 +386,22 @@ TEST(TextOverlay, GlyphPixelsInsideTheTextBoxOnly) {
       }
   // Lit cells of the 5x7 font: T 11, space 0, 1 10, . 4, 5 17; each 2x2 pixels at scale 2.
   EXPECT_EQ(lit, (11 + 10 + 4 + 17) * 4);
+}
+
+// A line too wide for the picture at scale 2 (24 characters x 12 pixels > 200) is drawn at
+// scale 1: every lit pixel is in the picture and the text ends before its right edge.
+TEST(TextOverlay, ALineTooWideIsDrawnSmallerNotCutOff) {
+  RgbaImage img{200, 60, std::vector<std::uint8_t>(200 * 60 * 4, 0)};
+  const std::string line = "NAO: STEPS 123  FELL 1.0";
+  draw_overlay(img, {line}, {.scale = 2, .colour = {255, 255, 255}, .backing = {0, 0, 0, 0}});
+  int lit = 0, rightmost = 0, lowest = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (img.pixel(x, y)[0] == 255) ++lit, rightmost = std::max(rightmost, x), lowest = y;
+  EXPECT_GT(lit, 0);
+  EXPECT_LT(rightmost, 200 - 1);
+  EXPECT_LT(rightmost, text_width(line, {.scale = 1}) + 10);
+  EXPECT_LT(lowest, 20);  // 7 rows of glyph at scale 1 below the margin
 }
 
 TEST(TextOverlay, SnapshotsCarryTheTimeAndCanDoWithout) {
