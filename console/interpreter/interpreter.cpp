@@ -10,6 +10,7 @@
 
 #include "console/interpreter/tokenizer.hpp"
 #include "console/interpreter/values.hpp"
+#include "console/session/sim_session.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
@@ -97,12 +98,23 @@ std::string Interpreter::resolve(const std::string& path) const {
   return fs::exists(beside) ? beside.string() : path;
 }
 
+// Legal but absurd parameters of the local controllers (of `module`, or all) get a note line, as
+// `stride run` gives them (behaviours/parameter_notes.hpp).
+void Interpreter::note_parameters(const std::string& module) {
+  SimSession& session = local_.session();
+  for (int i = 0; i < session.simulation().robot_count(); ++i)
+    if (const Runtime* rt = session.runtime(i))
+      for (const std::string& n : parameter_notes(*rt))
+        if (module.empty() || n.starts_with(module + ": ")) out_ << "note: " << n << "\n";
+}
+
 void Interpreter::load(const std::string& path) {
   simulation("load");
   const std::string resolved = find_input(resolve(path));  // a shipped scene from anywhere
   finish();
   local_.load(resolved);
   out_ << "loaded " << local_.name() << "\n";
+  note_parameters("");
   const fs::path script = fs::path(resolved).replace_extension(".con");
   if (fs::exists(script)) {
     out_ << "running " << script.string() << "\n";
@@ -299,6 +311,10 @@ void Interpreter::dispatch(const Command& c) {
     std::string fields;
     for (std::size_t i = 1; i < a.size(); ++i) fields += (i > 1 ? " " : "") + a[i];
     target().set(a[0], fields);
+    if (!remote_ && a[0].starts_with("module:")) {
+      const std::string module = a[0].substr(7);
+      note_parameters(module.substr(0, module.find('.')));
+    }
     return;
   }
   if (n == "mr") return module_request(a);

@@ -98,6 +98,7 @@ class Interpreter {
   void video(const std::vector<std::string>& a);
   void expect(const std::vector<std::string>& a);
   void wait_until(const std::vector<std::string>& a);
+  void note_parameters(const std::string& module);  // "": every module
 
   LocalTarget& local_;
   std::map<std::string, std::unique_ptr<RemoteTarget>> remotes_;  // by host:port

@@ -70,6 +70,17 @@ TEST_F(InterpreterTest, SetChangesParametersAllOrNothing) {
   EXPECT_EQ(run("get module:Stand.hip_pitch"), "-0.2\n");
 }
 
+// A legal but absurd gain is applied and noted; the shipped scene's own values are not.
+TEST_F(InterpreterTest, AbsurdParametersAreNotedWhenLoadedAndWhenSet) {
+  const std::string scene = STRIDE_SOURCE_DIR "/scenes/push/stand_balance.xml";
+  EXPECT_EQ(run("load " + scene).find("note:"), std::string::npos);
+  EXPECT_EQ(run("set module:AnkleBalance kp=10000"),
+            "note: AnkleBalance: kp = 10000 1/s^2: a closed-loop frequency of 100 rad/s, faster "
+            "than a 10 ms control loop follows (plausible up to 2500; Fig. 7.5 uses 72)\n");
+  EXPECT_EQ(target.get("module:AnkleBalance.kp"), "10000");
+  EXPECT_EQ(run("set module:AnkleBalance kp=72"), "");
+}
+
 TEST_F(InterpreterTest, GetShowsValuesAndTypeDescriptions) {
   run("run 0.1");
   const std::string description = run("get module:Stand ?");
