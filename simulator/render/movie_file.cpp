@@ -30,8 +30,9 @@ std::unique_ptr<MovieFile::Encoder> open_encoder(bool apng, const std::string& p
   return open_mp4(part, width, height, fps);
 #else
   throw Error(
-      "this stride was built without FFmpeg's libraries (Debian libavcodec-dev, libavformat-dev, "
-      "libswscale-dev); name a .apng movie instead");
+      "MP4 needs FFmpeg's libraries, and this stride was built without them (Debian "
+      "libavcodec-dev, libavformat-dev, libswscale-dev, libavutil-dev; -DSTRIDE_MP4=ON); name a "
+      ".apng movie instead");
 #endif
 }
 

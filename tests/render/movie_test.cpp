@@ -296,7 +296,7 @@ TEST(MovieFile, BadSizesAndPathsAreErrorsAndLeaveNoFile) {
   if (!mp4_supported()) {
     EXPECT_NE(error_of([&] {
                 MovieFile((dir / "x.mp4").string(), 96, 64, 25);
-              }).find("built without FFmpeg's libraries"),
+              }).find("MP4 needs FFmpeg's libraries, and this stride was built without them"),
               std::string::npos);
   }
 }
