@@ -16,20 +16,13 @@ namespace stride::console {
 namespace {
 using debug::Op;
 using debug::Request;
+using debug::request;
 
 std::string number_text(double v) {
   std::ostringstream o;
   o.precision(10);
   o << v;
   return o.str();
-}
-
-Request request(Op op, std::string key = {}, std::string text = {}) {
-  Request r;
-  r.op = op;
-  r.key = std::move(key);
-  r.text = std::move(text);
-  return r;
 }
 
 Value decode(const TypeDesc& d, const std::string& bytes, const std::string& what) {

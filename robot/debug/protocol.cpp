@@ -120,6 +120,14 @@ std::string_view op_name(Op op) {
   return "?";
 }
 
+Request request(Op op, std::string key, std::string text) {
+  Request r;
+  r.op = op;
+  r.key = std::move(key);
+  r.text = std::move(text);
+  return r;
+}
+
 bool op_writes(Op op) {
   for (const auto& o : kOps)
     if (o.op == op) return o.writes;

@@ -57,6 +57,9 @@ struct Request {
   std::uint64_t length = 0;
 };
 
+// A request of the common shape: an op with a key and a text.
+Request request(Op op, std::string key = {}, std::string text = {});
+
 using ClientMessage = std::variant<AuthMessage, Request>;
 
 // A request whose envelope (type and id) was fine but whose op or fields were not: answered with

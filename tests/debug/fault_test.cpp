@@ -20,10 +20,7 @@ using debug::Request;
 const std::string kPeer = STRIDE_BINARY_DIR "/debug_peer";
 
 std::string stand_value(DebugClient& c) {
-  Request r;
-  r.op = Op::Get;
-  r.key = "module:Stand";
-  return c.call(r)->fields().bytes("value");
+  return c.call(debug::request(Op::Get, "module:Stand"))->fields().bytes("value");
 }
 
 // Waits (bounded) until the server logged a line holding `part`.

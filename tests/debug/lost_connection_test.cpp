@@ -75,8 +75,7 @@ TEST(LostConnection, ConsoleKilledMidStreamLeavesTheLoopRunning) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   EXPECT_GT(loop.frames(), frames_before + 10);
   debug::DebugClient next(loop.endpoint(), "");
-  debug::Request sub;
-  sub.op = debug::Op::Subscribe;
+  debug::Request sub = debug::request(debug::Op::Subscribe);
   sub.keys = {"representation:Counter.n"};
   const std::int64_t from = next.call(sub)->fields().integer("from");
   const auto sample = next.next_sample(5);

@@ -18,14 +18,7 @@ namespace fs = std::filesystem;
 using debug::DebugClient;
 using debug::Op;
 using debug::Request;
-
-Request request(Op op, std::string key = {}, std::string text = {}) {
-  Request r;
-  r.op = op;
-  r.key = std::move(key);
-  r.text = std::move(text);
-  return r;
-}
+using debug::request;
 
 // The text of `key` in a get reply, decoded from the type description that came with it.
 std::string text_of(const debug::ServerMessage& reply, const std::string& path,
