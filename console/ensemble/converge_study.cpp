@@ -12,8 +12,17 @@ namespace {
 
 using experiments::fixed;
 
+bool any_kept(const std::vector<EnsembleSummary>& s) {
+  for (const EnsembleSummary& e : s)
+    if (e.true_distance.n > 0) return true;
+  return false;
+}
+
 void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s) {
   if (!experiments::prepare_out_dir(o.files)) return;
+  // With no kept walk the distance curve has no point to draw: its table is still written.
+  experiments::ExperimentOptions distance_files = o.files;
+  distance_files.plots = distance_files.plots && any_kept(s);
   plot::Table t{{"setting", "members", "fell", "lost", "distance_mean", "distance_sd",
                  "distance_min", "distance_max", "fk_distance_mean", "steps_mean", "steps_sd",
                  "slip_net_x_mean", "edge_time_mean", "real_time_factor", "wall_per_member"}};
@@ -28,8 +37,8 @@ void write_files(const ConvergeOptions& o, const std::vector<EnsembleSummary>& s
                e.real_time_factor, e.wall_per_member});
   }
   const std::string x = "setting, numbered in converge_settings.txt [-]";
-  experiments::write_plot(o.files, t, "converge_distance", o.scene + ": kept walks' true distance",
-                          "setting",
+  experiments::write_plot(distance_files, t, "converge_distance",
+                          o.scene + ": kept walks' true distance", "setting",
                           {{"distance_mean", "mean", ""},
                            {"distance_min", "min", ""},
                            {"distance_max", "max", ""},
@@ -88,9 +97,15 @@ int run_convergence_study(const ConvergeOptions& o, std::ostream& out) {
   }
   experiments::print_table(out, header, rows);
   const int best = cheapest_agreeing(summaries, reference, o.tolerance);
-  out << "cheapest agreeing setting: " << o.settings[best] << " ("
-      << fixed(summaries[best].real_time_factor, 2) << "x real time, "
-      << fixed(summaries[best].wall_per_member, 1) << " s per walk)\n";
+  if (!any_kept(summaries))
+    out << "no setting kept the walk upright in " << o.spec.members
+        << " starts: every walk fell or tipped, so there is no distance to compare\n";
+  else if (best < 0)
+    out << "no setting agrees with the reference\n";
+  else
+    out << "cheapest agreeing setting: " << o.settings[best] << " ("
+        << fixed(summaries[best].real_time_factor, 2) << "x real time, "
+        << fixed(summaries[best].wall_per_member, 1) << " s per walk)\n";
   write_files(o, summaries);
   return best;
 }

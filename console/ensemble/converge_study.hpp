@@ -27,7 +27,9 @@ struct ConvergeOptions {
 // then the exact solver at 1 ms and at 0.5 ms (the reference).
 std::vector<std::string> default_settings();
 
-// Runs the study and prints its table; returns the index of the cheapest agreeing setting.
+// Runs the study and prints its table; returns the index of the cheapest agreeing setting, -1
+// when none agrees. A study where no setting keeps a walk is a completed study (exit 0): it says
+// so and writes every table, leaving out only the distance plot, which would have no point.
 int run_convergence_study(const ConvergeOptions& o, std::ostream& out);
 
 }  // namespace stride::ensemble

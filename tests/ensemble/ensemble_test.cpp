@@ -182,5 +182,35 @@ TEST(ConvergeCommand, TablesEverySettingAndWritesTheCurves) {
   EXPECT_EQ(first, "1 iterations=10");
 }
 
+// A study in which every walk falls has completed with a negative result: it says so, writes its
+// tables and the outcome plot, leaves out the distance plot (no point to draw; gnuplot refused
+// it, and the command exited 1 before writing the rest), and exits 0.
+TEST(ConvergeCommand, NoKeptWalkIsSaidAndTabledAndExitsZero) {
+  const std::string dir = testing::TempDir() + "/converge_none";
+  const std::string scene = testing::TempDir() + "/converge_limp.xml";
+  const std::string robots = std::string(STRIDE_SOURCE_DIR) + "/scenes/robots/nao/";
+  std::ofstream(scene) << "<scene><physics step=\"1ms\" seed=\"1\"/><ground/>"
+                       << "<robot name=\"nao\" urdf=\"" << robots << "nao.urdf\" devices=\""
+                       << robots << "nao.devices.xml\" xyz=\"0 0 auto\" stiffness=\"0\">"
+                       << "<joints LKneePitch=\"0.6\"/></robot></scene>";
+  std::vector<std::string> args{scene,       "--settings", "iterations=10", "--starts", "1",
+                                "--seconds", "1.2",        "--jobs",        "1",        "--out",
+                                dir};
+  std::ostringstream out, err;
+  ASSERT_EQ(cli::converge_main(args, out, err), 0) << err.str();
+  EXPECT_EQ(err.str(), "");
+  EXPECT_NE(out.str().find("\niterations=10   1/1   1/1"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("no setting kept the walk upright in 1 starts"), std::string::npos);
+  EXPECT_EQ(out.str().find("cheapest agreeing setting"), std::string::npos);
+  std::ifstream csv(dir + "/converge_distance.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(row.substr(0, 6), "1,1,1,");  // setting 1: one member, fell, lost
+  EXPECT_FALSE(std::ifstream(dir + "/converge_distance.png").good());
+  EXPECT_TRUE(std::ifstream(dir + "/converge_outcome.png").good());
+  EXPECT_TRUE(std::ifstream(dir + "/converge_settings.txt").good());
+}
+
 }  // namespace
 }  // namespace stride
