@@ -79,11 +79,17 @@ bool labels_unit(std::string_view label);
 // gnuplot is not installed.
 std::string png_terminal();
 
-// The gnuplot script for spec, given the CSV header columns (exposed for tests and debugging).
-std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>& csv_columns,
-                           std::string_view terminal);
+// The CSV's cells as text, header first (what render_png embeds in its script).
+using CsvCells = std::vector<std::vector<std::string>>;
 
-// Reads the CSV header, writes <png without .png>.gp and runs gnuplot on it. Throws
+// The gnuplot script for spec, given the CSV header columns (exposed for tests and debugging).
+// With `cells` (the whole CSV), each curve's (x, y) pairs go into the script as a datablock, so
+// gnuplot reads each value once: reading the CSV once per curve costs curves x columns per row,
+// quadratic in the number of keys a console `plot` records.
+std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>& csv_columns,
+                           std::string_view terminal, const CsvCells* cells = nullptr);
+
+// Reads the CSV, writes <png without .png>.gp (data included) and runs gnuplot on it. Throws
 // stride::Error when gnuplot is missing, a column is unknown, gnuplot fails or a file cannot be
 // written.
 void render_png(const PlotSpec& spec);

@@ -22,7 +22,9 @@ std::vector<fs::path> shipped_scenes() {
   for (const auto& e : fs::recursive_directory_iterator(root)) {
     const fs::path rel = fs::relative(e.path(), root);
     const bool sweep = e.path().filename().string().ends_with(".sweep.xml");  // shipped_sweeps
-    if (e.path().extension() == ".xml" && !sweep && *rel.begin() != "robots")
+    // scenes/hostile/ holds the broken cases of the overnight sweep (tested below).
+    if (e.path().extension() == ".xml" && !sweep && *rel.begin() != "robots" &&
+        *rel.begin() != "hostile")
       scenes.push_back(e.path());
   }
   std::sort(scenes.begin(), scenes.end());
@@ -42,6 +44,26 @@ TEST(ShippedScenes, EveryOneLoadsAndSteps) {
       ADD_FAILURE() << e.what();
     }
   }
+}
+
+// The overnight sweep's broken cases: the robot that cannot be simulated is refused at load with
+// the URDF's file:line; the walk pushed apart loads and runs until its push.
+TEST(ShippedScenes, TheHostileCasesFailAsIntended) {
+  const fs::path dir = fs::path(STRIDE_SOURCE_DIR) / "scenes" / "hostile";
+  try {
+    console::SimSession session((dir / "broken_urdf.xml").string());
+    ADD_FAILURE() << "broken_urdf.xml loaded";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("broken_inertia.urdf:7: link 'base': inertia violates the triangle "
+                        "inequality"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+  }
+  console::SimSession pushed((dir / "pushed_apart_walk.xml").string());
+  pushed.simulation().run_for(0.05);
+  EXPECT_GE(pushed.simulation().time(), 0.05 - 1e-9);
 }
 
 }  // namespace
