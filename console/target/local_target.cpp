@@ -1,6 +1,7 @@
 #include "console/target/local_target.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -76,6 +77,7 @@ void LocalTarget::load(const std::string& scene_path) {
   auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
   session_ = std::move(fresh);
   selected_ = served_ = 0;
+  stepping_wall_ = 0;
   swapped_.clear();
   video_.stop();  // a recording belongs to the scene it started in
   attach_server();
@@ -83,12 +85,14 @@ void LocalTarget::load(const std::string& scene_path) {
 
 void LocalTarget::reset() {
   session().reset();
+  stepping_wall_ = 0;
   swapped_.clear();
   attach_server();
 }
 
 std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
   auto& sim = session().simulation();
+  const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t done = 0;
   while (done < steps) {
     sim.step();
@@ -96,6 +100,7 @@ std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool
     if (video_.active()) video_.after_step(renderer(), sim);
     if (after_step && !after_step()) break;
   }
+  stepping_wall_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return done;
 }
 
@@ -276,10 +281,10 @@ std::vector<std::string> LocalTarget::log_info() {
 }
 
 std::string LocalTarget::report_text() {
-  return sim::run_report_text(session().simulation(), {});
+  return sim::run_report_text(session().simulation(), {.wall_time = stepping_wall_});
 }
 std::string LocalTarget::report_json() {
-  return sim::run_report_json(session().simulation(), {});
+  return sim::run_report_json(session().simulation(), {.wall_time = stepping_wall_});
 }
 
 void LocalTarget::push(const std::string& body, double fx, double fy, double fz, double seconds) {

@@ -90,7 +90,8 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   int selected_ = 0;       // robot index
   std::set<int> swapped_;  // robots whose providers differ from the scene's (a replay would not)
   std::unique_ptr<debug::DebugServer> server_;
-  int served_ = 0;  // robot index the server is attached to
+  int served_ = 0;            // robot index the server is attached to
+  double stepping_wall_ = 0;  // s of wall time stepping since load/reset: the report's wall time
 };
 
 }  // namespace stride::console

@@ -196,6 +196,10 @@ TEST_F(InterpreterTest, ReportWritesJsonWithTheStateHash) {
   EXPECT_EQ(hash.size(), 16u);
   EXPECT_NE(s.str().find("\"state_hash\""), std::string::npos) << s.str();
   EXPECT_NE(s.str().find("\"" + hash + "\""), std::string::npos) << s.str();
+  // The wall time is the stepping's, not 0 (a real-time factor of 0 would be a false figure).
+  const std::size_t wall = s.str().find("\"wall_time\":");
+  ASSERT_NE(wall, std::string::npos) << s.str();
+  EXPECT_GT(std::stod(s.str().substr(wall + 12)), 0.0) << s.str();
   EXPECT_NE(run("report").find("hash " + target.get("sim.hash")), std::string::npos);
 }
 
