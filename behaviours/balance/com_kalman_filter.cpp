@@ -1,6 +1,7 @@
 #include "behaviours/balance/com_kalman_filter.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "robot/core/error.hpp"
 
@@ -59,17 +60,28 @@ ComEstimate predict(const ComFilterModel& model, const ComEstimate& e, const Eig
   return r;
 }
 
-ComEstimate update(const ComEstimate& e, const Eigen::VectorXd& y, const Eigen::MatrixXd& C,
-                   const Eigen::MatrixXd& R) {
+ComEstimate update(const ComEstimate& e, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   const Eigen::Ref<const Eigen::MatrixXd>& C,
+                   const Eigen::Ref<const Eigen::MatrixXd>& R) {
   if (C.cols() != 6 || C.rows() != y.size() || R.rows() != y.size() || R.cols() != y.size())
     throw Error("CoM filter update: need C (k x 6), y (k) and R (k x k) of matching size k");
-  const Eigen::MatrixXd S = C * e.P * C.transpose() + R;
-  const Eigen::MatrixXd K = S.ldlt().solve(C * e.P).transpose();  // P C^T S^-1 (S symmetric)
+  if (y.size() > kMaxMeasurements)
+    throw Error("CoM filter update: at most " + std::to_string(kMaxMeasurements) +
+                " measurements, got " + std::to_string(y.size()));
+  // Dynamic sizes held inside the matrices (at most 6), as the heap-sized ones computed them, so
+  // an update in a control frame does not allocate.
+  constexpr int kMax = kMaxMeasurements;
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, 6>;
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
+  const Matrix Cm = C, Rm = R;
+  const Vector ym = y;
+  const Matrix S = Cm * e.P * Cm.transpose() + Rm;
+  const Matrix K = S.ldlt().solve(Cm * e.P).transpose();  // P C^T S^-1 (S symmetric)
   ComEstimate r;
-  r.x = e.x + K * (y - C * e.x);
+  r.x = e.x + K * (ym - Cm * e.x);
   // Joseph form keeps P symmetric positive semi-definite under rounding.
-  const ComFilterCovariance IKC = ComFilterCovariance::Identity() - K * C;
-  r.P = IKC * e.P * IKC.transpose() + K * R * K.transpose();
+  const ComFilterCovariance IKC = ComFilterCovariance::Identity() - K * Cm;
+  r.P = IKC * e.P * IKC.transpose() + K * Rm * K.transpose();
   return r;
 }
 

@@ -32,8 +32,12 @@ struct ComEstimate {
 // Time update x <- A x + B u, P <- A P A^T + Q.
 ComEstimate predict(const ComFilterModel& model, const ComEstimate& e, const Eigen::Vector2d& u);
 
-// Measurement update with any linear measurement y = C x + v, v ~ N(0, R).
-ComEstimate update(const ComEstimate& e, const Eigen::VectorXd& y, const Eigen::MatrixXd& C,
-                   const Eigen::MatrixXd& R);
+// Measurement update with any linear measurement y = C x + v, v ~ N(0, R), of at most
+// kMaxMeasurements values (more: stride::Error). Does not allocate (fixed-size arguments bind
+// without a copy).
+constexpr int kMaxMeasurements = 6;
+ComEstimate update(const ComEstimate& e, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   const Eigen::Ref<const Eigen::MatrixXd>& C,
+                   const Eigen::Ref<const Eigen::MatrixXd>& R);
 
 }  // namespace stride::balance

@@ -56,6 +56,12 @@ model::LegAngles leg_gravity_torques(const model::RobotModel& m, const LegGravit
                                      const Eigen::VectorXd& q_model,
                                      const Eigen::Vector3d& gravity) {
   std::vector<Eigen::Isometry3d> poses;
+  return leg_gravity_torques(m, leg, q_model, gravity, poses);
+}
+
+model::LegAngles leg_gravity_torques(const model::RobotModel& m, const LegGravityModel& leg,
+                                     const Eigen::VectorXd& q_model, const Eigen::Vector3d& gravity,
+                                     std::vector<Eigen::Isometry3d>& poses) {
   model::link_poses(m, q_model, poses);
   model::LegAngles g{};
   for (int j = 0; j < 6; ++j) {

@@ -2,6 +2,7 @@
 // Thesis Ch. 6's landing foot as pure functions: the sole's planned descent, the impedance law of
 // Eq. 6.17 and the gravity term g(theta) it adds, for the NAO's left leg in the torso frame.
 #include <array>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -44,5 +45,10 @@ LegGravityModel left_leg_gravity_model(const model::RobotModel& model);
 model::LegAngles leg_gravity_torques(const model::RobotModel& model, const LegGravityModel& leg,
                                      const Eigen::VectorXd& q_model,
                                      const Eigen::Vector3d& gravity);
+// The same with the link poses computed into `poses` (sized once by the caller's first call, so
+// a control frame that keeps it does not allocate).
+model::LegAngles leg_gravity_torques(const model::RobotModel& model, const LegGravityModel& leg,
+                                     const Eigen::VectorXd& q_model, const Eigen::Vector3d& gravity,
+                                     std::vector<Eigen::Isometry3d>& poses);
 
 }  // namespace stride::landing

@@ -103,10 +103,10 @@ class LandingImpedance final : public LandingFoot {
  private:
   double hold_stiffness() const override { return params_.hold_stiffness; }
   void land() override {
-    Eigen::VectorXd q_model = model::zero_joints(model_);
+    q_model_.setZero();  // joints LoLA does not name stay at zero
     for (const auto& [j, l] : lola_of_joint_)
-      q_model[static_cast<Eigen::Index>(j)] = joints_.position[l];
-    model::apply_mimic(model_, q_model);
+      q_model_[static_cast<Eigen::Index>(j)] = joints_.position[l];
+    model::apply_mimic(model_, q_model_);
     // Gravity in the torso frame from the IMU's roll and pitch.
     const Eigen::Matrix3d torso =
         (Eigen::AngleAxisd(inertial_.angles.y(), Eigen::Vector3d::UnitY()) *
@@ -115,10 +115,10 @@ class LandingImpedance final : public LandingFoot {
     const Eigen::Vector3d gravity = torso.transpose() * Eigen::Vector3d(0, 0, -9.81);
     const landing::ImpedanceGains gains{params_.stiffness, params_.damping, params_.rot_stiffness,
                                         params_.rot_damping};
-    const model::LegAngles tau =
-        landing::impedance_torques(gains, target(params_.speed, params_.descent),
-                                   left_leg(joints_.position), left_leg(velocities_.velocity),
-                                   landing::leg_gravity_torques(model_, leg_, q_model, gravity));
+    const model::LegAngles tau = landing::impedance_torques(
+        gains, target(params_.speed, params_.descent), left_leg(joints_.position),
+        left_leg(velocities_.velocity),
+        landing::leg_gravity_torques(model_, leg_, q_model_, gravity, poses_));
     // HipYawPitch is shared with the right leg: it keeps its position; the other five push.
     for (int i = 1; i < 6; ++i) {
       const int k = hal::index(kLeftLeg[i]);
@@ -133,6 +133,10 @@ class LandingImpedance final : public LandingFoot {
   const model::RobotModel model_;  // a copy: the module outlives nothing it borrowed
   landing::LegGravityModel leg_;
   std::vector<std::pair<std::size_t, int>> lola_of_joint_;  // model joint, LoLA index
+  // Work space sized here, so a control frame does not allocate.
+  Eigen::VectorXd q_model_ = model::zero_joints(model_);
+  std::vector<Eigen::Isometry3d> poses_ =
+      std::vector<Eigen::Isometry3d>(model_.links.size(), Eigen::Isometry3d::Identity());
 };
 
 }  // namespace

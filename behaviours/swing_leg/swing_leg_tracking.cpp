@@ -55,10 +55,9 @@ class SwingLegTracking final : public Module {
       q[i] = joints_.position[index(swing_leg::kLeftLeg3d[i])];
       qd[i] = velocities_.velocity[index(swing_leg::kLeftLeg3d[i])];
     }
-    Eigen::VectorXd rq, rqd, rqdd;
-    reference_(frame_.time, rq, rqd, rqdd);
+    reference_(frame_.time, rq_, rqd_, rqdd_);
     const swing_leg::LegTrackingStep step =
-        swing_leg::leg3d_tracking_step(params_.controller, q, qd, {rq, rqd, rqdd}, a_hat_,
+        swing_leg::leg3d_tracking_step(params_.controller, q, qd, {rq_, rqd_, rqdd_}, a_hat_,
                                        params_.lambda, params_.kd, params_.gamma);
     a_hat_ += frame_.period * step.a_hat_rate;
     for (int i = 0; i < hal::kNumJoints; ++i) {
@@ -85,6 +84,8 @@ class SwingLegTracking final : public Module {
   WalkPreset preset_ = WalkPreset::medium;
   swing_leg::ReferenceFunction reference_;
   swing_leg::Leg17 a_hat_ = swing_leg::Leg17::Zero();  // the estimates start at zero
+  // The reference's values, sized here so a control frame does not allocate.
+  Eigen::VectorXd rq_ = Eigen::VectorXd::Zero(5), rqd_ = rq_, rqdd_ = rq_;
 };
 
 }  // namespace

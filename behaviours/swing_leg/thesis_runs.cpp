@@ -61,14 +61,15 @@ ReferenceFunction planar_sine_reference() {
 
 ReferenceFunction walking_pattern_reference(const std::string& preset) {
   auto pattern = std::make_shared<walking::StretchedKneePattern>(walking::preset(preset));
+  // Fixed size: a control frame that calls this with q, qd, qdd of size 5 does not allocate.
   const auto angles = [pattern](double t) {
     const double clamped = std::clamp(t, 0.0, pattern->duration());
     const auto& l = walking::leg_joints(pattern->sample(clamped)).left;
-    return vec({l[1], l[2], l[3], l[4], l[5]});
+    return Eigen::Matrix<double, 5, 1>(l[1], l[2], l[3], l[4], l[5]);
   };
   return [angles](double t, Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& qdd) {
     constexpr double h = 1e-3;  // s: smooth enough for the pattern, far above rounding
-    const Eigen::VectorXd before = angles(t - h), after = angles(t + h);
+    const Eigen::Matrix<double, 5, 1> before = angles(t - h), after = angles(t + h);
     q = angles(t);
     qd = (after - before) / (2 * h);
     qdd = (after - 2 * q + before) / (h * h);

@@ -80,6 +80,11 @@ TEST(ComKalmanFilter, MismatchedMeasurementIsAnError) {
       update(e, Eigen::Vector3d::Zero(), com_cop_measurement(), Eigen::Matrix3d::Identity()),
       Error);
   EXPECT_THROW(com_filter_model(0, 9.81, 0.01, 1, 1, 1), Error);
+  // Its matrices hold at most kMaxMeasurements rows in place (no allocation in a frame).
+  const Eigen::MatrixXd C7 = Eigen::MatrixXd::Identity(kMaxMeasurements + 1, 6);
+  EXPECT_THROW(update(e, Eigen::VectorXd::Zero(kMaxMeasurements + 1), C7,
+                      Eigen::MatrixXd::Identity(kMaxMeasurements + 1, kMaxMeasurements + 1)),
+               Error);
 }
 
 }  // namespace
