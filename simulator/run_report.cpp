@@ -19,7 +19,7 @@ std::string hash_hex(std::uint64_t h) {
 std::string solver_text(const PhysicsSettings& physics) {
   std::ostringstream o;
   o << enum_name(physics.solver);
-  if (physics.solver == PhysicsSettings::Solver::Exact) return o.str();
+  if (physics.solver != PhysicsSettings::Solver::Iterative) return o.str();
   o << " " << physics.iterations;
   if (physics.sor != 1.3) o << " sor " << physics.sor;
   return o.str();

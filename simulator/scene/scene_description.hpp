@@ -22,7 +22,9 @@ struct PhysicsSettings {
   std::string file;  // where <physics> was written (empty: defaults), for engine errors
   int line = 0;
   double step = 0.001;  // s
-  enum class Solver { Exact, Iterative } solver = Solver::Iterative;
+  // exact: ODE's dWorldStep, MuJoCo's Newton; iterative: ODE's quickstep, MuJoCo's PGS;
+  // cg: MuJoCo's conjugate gradient (MuJoCo only). Newton and CG run to convergence.
+  enum class Solver { Exact, Iterative, Cg } solver = Solver::Iterative;
   // Iterative solver only. Walking studies state 20 (README "Solver settings").
   int iterations = 10;
   double sor = 1.3;  // over-relaxation of the iterative solver
@@ -34,6 +36,13 @@ struct PhysicsSettings {
   // scene, shared over however many points the collider finds for it in a step.
   bool contact_spring_per_body = false;
   int max_contacts = 8;  // per colliding geometry pair
+  // MuJoCo only (mujoco_options.hpp): friction cone, no-slip pass, contact solref and solimp.
+  enum class Cone { Elliptic, Pyramidal } cone = Cone::Elliptic;
+  int noslip_iterations = 10;
+  double contact_timeconst = 0.02;  // s, solref[0]
+  double contact_dampratio = 1.0;   // solref[1]
+  double contact_dmin = 0.9;        // solimp[0]
+  double contact_dmax = 0.95;       // solimp[1]
   Eigen::Vector3d gravity{0, 0, -9.81};
   std::uint64_t seed = 1;
 };

@@ -16,6 +16,7 @@
 #include "robot/model/physical_limits.hpp"
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
+#include "simulator/scene/mujoco_options.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/solver_names.hpp"
 #include "simulator/world/contact_softness.hpp"
@@ -137,9 +138,27 @@ class Parser {
   void physics(const XmlElement& e) {
     physics_seen_ = true;
     set_physics_over(e);
-    e.allow_only({"engine", "step", "solver", "iterations", "sor", "erp", "cfm", "contact_erp",
-                  "contact_cfm", "contact_stiffness", "contact_damping", "contact_spring_per",
-                  "max_contacts", "gravity", "seed"});
+    e.allow_only({"engine",
+                  "step",
+                  "solver",
+                  "iterations",
+                  "sor",
+                  "erp",
+                  "cfm",
+                  "contact_erp",
+                  "contact_cfm",
+                  "contact_stiffness",
+                  "contact_damping",
+                  "contact_spring_per",
+                  "max_contacts",
+                  "gravity",
+                  "seed",
+                  "cone",
+                  "noslip_iterations",
+                  "contact_timeconst",
+                  "contact_dampratio",
+                  "contact_dmin",
+                  "contact_dmax"});
     no_children(e);
     once(e);
     PhysicsSettings& p = out_.physics;
@@ -148,7 +167,7 @@ class Parser {
     if (p.step <= 0 || p.step > 0.02) e.fail_attr("step", "expected a time in (0, 20 ms]");
     using Solver = PhysicsSettings::Solver;
     const auto& solvers = EnumNames<Solver>::names;
-    p.solver = static_cast<Solver>(e.choice_or("solver", {solvers[0], solvers[1]}, 1));
+    p.solver = static_cast<Solver>(e.choice_or("solver", {solvers[0], solvers[1], solvers[2]}, 1));
     p.iterations = e.integer_or("iterations", p.iterations, 1, 10000);
     p.sor = e.number_or("sor", p.sor);
     if (p.sor <= 0 || p.sor >= 2) e.fail_attr("sor", "expected a value in (0, 2)");
@@ -163,6 +182,7 @@ class Parser {
     p.max_contacts = e.integer_or("max_contacts", p.max_contacts, 1, 64);
     p.gravity = e.vector3_within("gravity", p.gravity, limits::kMaxGravity);
     p.seed = e.seed_or("seed", p.seed);
+    parse_mujoco_options(e, p);
   }
 
   static constexpr const char* kOdeOnly[] = {"sor",
@@ -190,8 +210,8 @@ class Parser {
       if (e.has(ode_only))
         e.fail_attr(ode_only,
                     "an ODE setting; engine=\"mujoco\" uses MuJoCo's own contact "
-                    "model (solref/solimp defaults) and takes step, solver, iterations, "
-                    "gravity and seed");
+                    "model and takes step, solver, iterations, gravity, seed and its "
+                    "cone, noslip_iterations and contact_timeconst/dampratio/dmin/dmax");
   }
 
   // Writes the attributes set over the scene into its element, dropping the ones they replace.

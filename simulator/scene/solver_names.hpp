@@ -9,5 +9,5 @@
 template <>
 struct stride::EnumNames<stride::sim::PhysicsSettings::Solver> {
   static constexpr std::string_view type_name = "Solver";
-  static constexpr std::array<std::string_view, 2> names{"exact", "iterative"};
+  static constexpr std::array<std::string_view, 3> names{"exact", "iterative", "cg"};
 };

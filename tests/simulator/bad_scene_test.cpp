@@ -75,6 +75,14 @@ TEST(BadScene, PushOnMissingRobot) {
                "bad.xml:2", "no robot named 'ghost'");
 }
 
+// MuJoCo's contact attributes and its CG solver mean nothing to ODE: an error, not ignored.
+TEST(BadScene, MujocoSettingOnOdeIsAnError) {
+  expect_error("<scene>\n<physics cone=\"pyramidal\"/>\n</scene>", "bad.xml:2", "a MuJoCo setting");
+  expect_error("<scene>\n<physics contact_timeconst=\"5ms\"/>\n</scene>", "bad.xml:2",
+               "contact_timeconst");
+  expect_error("<scene>\n<physics solver=\"cg\"/>\n</scene>", "bad.xml:2", "MuJoCo's solver");
+}
+
 TEST(BadScene, ContactSpringNeedsBothValuesAndNotErpCfm) {
   expect_error("<scene>\n<physics contact_stiffness=\"4e4\"/>\n</scene>", "bad.xml:2",
                "contact_stiffness and contact_damping together");

@@ -61,6 +61,54 @@ TEST(MujocoEngine, PushGivesAFreeBlockTheImpulseOverItsMass) {
   EXPECT_NEAR(v.z(), -9.81 * 0.1, 1e-9);
 }
 
+// The MuJoCo-only <physics> attributes (measuring a walk's dependence on MuJoCo's contact model)
+// reach the compiled model; without them it is MuJoCo's own defaults with the elliptic cone and
+// 10 no-slip iterations.
+TEST(MujocoEngine, ContactOptionsReachTheCompiledModel) {
+  const auto compiled = [](const std::string& attrs) {
+    const auto sim =
+        test::scene_from_text("<scene><physics engine=\"mujoco\" " + attrs + "/></scene>");
+    auto world = std::make_unique<sim::MjWorld>(sim->scene().physics, sim->scene().ground);
+    world->step();  // compiles the ground-only scene
+    return world;
+  };
+  const auto plain = compiled("solver=\"exact\"");
+  const mjModel* m = plain->model();
+  EXPECT_EQ(m->opt.solver, mjSOL_NEWTON);
+  EXPECT_EQ(m->opt.cone, mjCONE_ELLIPTIC);
+  EXPECT_EQ(m->opt.noslip_iterations, 10);
+  EXPECT_DOUBLE_EQ(m->geom_solref[0], 0.02);
+  EXPECT_DOUBLE_EQ(m->geom_solref[1], 1.0);
+  EXPECT_DOUBLE_EQ(m->geom_solimp[0], 0.9);
+  EXPECT_DOUBLE_EQ(m->geom_solimp[1], 0.95);
+  const auto varied = compiled(
+      "solver=\"cg\" cone=\"pyramidal\" noslip_iterations=\"0\" contact_timeconst=\"5ms\" "
+      "contact_dampratio=\"0.5\" contact_dmin=\"0.8\" contact_dmax=\"0.99\"");
+  m = varied->model();
+  EXPECT_EQ(m->opt.solver, mjSOL_CG);
+  EXPECT_EQ(m->opt.cone, mjCONE_PYRAMIDAL);
+  EXPECT_EQ(m->opt.noslip_iterations, 0);
+  EXPECT_DOUBLE_EQ(m->geom_solref[0], 0.005);
+  EXPECT_DOUBLE_EQ(m->geom_solref[1], 0.5);
+  EXPECT_DOUBLE_EQ(m->geom_solimp[0], 0.8);
+  EXPECT_DOUBLE_EQ(m->geom_solimp[1], 0.99);
+}
+
+TEST(MujocoEngine, ContactOptionsOutOfRangeAreErrorsAtTheirLine) {
+  for (const std::string& bad :
+       {"contact_timeconst=\"1ms\"", "contact_dampratio=\"0\"", "contact_dmin=\"1\"",
+        "cone=\"round\"", "noslip_iterations=\"-1\""}) {
+    try {
+      test::scene_from_text("<scene>\n<physics engine=\"mujoco\" " + bad + "/></scene>");
+      ADD_FAILURE() << "expected an error for " << bad;
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("inline.xml:2"), std::string::npos) << what;
+      EXPECT_NE(what.find(bad.substr(0, bad.find('='))), std::string::npos) << what;
+    }
+  }
+}
+
 TEST(MujocoEngine, OdeOnlySettingIsAnErrorAtItsLine) {
   try {
     test::scene_from_text("<scene>\n<physics engine=\"mujoco\" contact_erp=\"0.3\"/></scene>");

@@ -7,11 +7,11 @@
 namespace stride::sim {
 namespace {
 
-// MuJoCo's contact: its default soft constraints (solref 0.02 1, solimp 0.9 0.95 0.001) on an
-// elliptic friction cone, with 10 iterations of its no-slip pass. The default pyramidal cone
-// rattles a box on a box and lets a block creep down a ramp it should hold; without the no-slip
-// pass a standing NAO creeps 0.11 m in 10 s (tests/simulator: both engines' ramp and standing).
-constexpr int kNoslip = 10;
+// MuJoCo's contact by default (PhysicsSettings): its own soft constraints (solref 0.02 1, solimp
+// 0.9 0.95 0.001) on an elliptic friction cone, with 10 iterations of its no-slip pass. The
+// default pyramidal cone rattles a box on a box and lets a block creep down a ramp it should
+// hold; without the no-slip pass a standing NAO creeps 0.11 m in 10 s (tests/simulator: both
+// engines' ramp and standing). A scene may state others (mujoco_options.hpp) to measure them.
 
 std::string num(double v) {
   char buf[32];
@@ -109,13 +109,22 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
                        std::vector<GeomInfo>& geoms) {
   geoms.clear();
   std::ostringstream out;
-  const bool exact = physics.solver == PhysicsSettings::Solver::Exact;
+  using Solver = PhysicsSettings::Solver;
+  const bool converged = physics.solver != Solver::Iterative;  // Newton and CG run to convergence
+  const char* solver = physics.solver == Solver::Exact ? "Newton"
+                       : physics.solver == Solver::Cg  ? "CG"
+                                                       : "PGS";
+  const bool elliptic = physics.cone == PhysicsSettings::Cone::Elliptic;
   out << "<mujoco model=\"stride\">\n<compiler angle=\"radian\" balanceinertia=\"true\"/>\n"
       << "<option timestep=\"" << num(physics.step) << "\" gravity=\"" << vec(physics.gravity)
-      << "\" integrator=\"Euler\" jacobian=\"dense\" cone=\"elliptic\" noslip_iterations=\""
-      << kNoslip << "\" solver=\"" << (exact ? "Newton" : "PGS") << "\" iterations=\""
-      << (exact ? 100 : physics.iterations) << "\" tolerance=\"" << (exact ? "1e-10" : "0")
+      << "\" integrator=\"Euler\" jacobian=\"dense\" cone=\""
+      << (elliptic ? "elliptic" : "pyramidal") << "\" noslip_iterations=\""
+      << physics.noslip_iterations << "\" solver=\"" << solver << "\" iterations=\""
+      << (converged ? 100 : physics.iterations) << "\" tolerance=\"" << (converged ? "1e-10" : "0")
       << "\"/>\n"
+      << "<default><geom solref=\"" << num(physics.contact_timeconst) << " "
+      << num(physics.contact_dampratio) << "\" solimp=\"" << num(physics.contact_dmin) << " "
+      << num(physics.contact_dmax) << " 0.001\"/></default>\n"
       << "<size njmax=\"1000\" nconmax=\"250\"/>\n<worldbody>\n";
   if (ground.enabled) {
     out << "<geom type=\"plane\" size=\"0 0 1\"" << friction_attr(ground.friction) << " priority=\""
