@@ -65,7 +65,10 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
   Marks marks;
   marks.walk = console::walk_pattern_info(*session);
   if (spec.until.mark == "end") throw Error("the run's length cannot be relative to its end");
-  marks.end = marks.absolute(spec.until);
+  // The run ends on the physics step nearest its mark, and a summary through the end includes that
+  // step's frame: an end of 2 + 10.799999999999999 + 1 s is step 13800, whose frame is at 13.8 s.
+  const double step = sim.scene().physics.step;
+  marks.end = static_cast<double>(std::llround(marks.absolute(spec.until) / step)) * step;
 
   FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys);
   std::vector<WindowedStat> summaries;
@@ -105,7 +108,6 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
 
   // Run to each time a value is read, then to the end.
   std::map<std::int64_t, std::vector<std::size_t>> reads;  // physics step -> values read there
-  const double step = sim.scene().physics.step;
   const auto step_of = [&](double t) { return static_cast<std::int64_t>(std::llround(t / step)); };
   const std::int64_t end_step = step_of(marks.end);
   for (std::size_t i = 0; i < spec.record.values.size(); ++i) {

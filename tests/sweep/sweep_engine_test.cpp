@@ -108,6 +108,29 @@ TEST(SweepEngine, EveryExecutorGivesTheSameRowsAndDivergenceIsAFailedRow) {
   fs::remove_all(a), fs::remove_all(b);
 }
 
+TEST(SweepEngine, ASummaryThroughTheEndHasTheLastStepsFrameWhenTheMarkFallsJustShort) {
+  // 0.30999999999999994 s rounds to step 310, whose frame is at 0.31 s: the 31st of 10 ms.
+  const Sweep s(parse_sweep_text(R"(<sweep name="end" scenes="../../scenes">
+  <scene file="nao_stand_controlled.xml"/>
+  <run seconds="0.30999999999999994"/>
+  <record>
+    <value name="t" key="representation:FrameInfo.time"/>
+    <summary name="frames" key="representation:FrameInfo.time" stat="count"/>
+    <summary name="t_final" key="representation:FrameInfo.time" stat="final"/>
+  </record>
+</sweep>)",
+                                 std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/end.sweep.xml"));
+  const fs::path d = fresh_dir("end");
+  const SweepResult r = run(s, *in_process_executor(), d);
+  ASSERT_TRUE(r.complete);
+  const auto& row = r.rows[0];  // run, scene, seed, status, t, frames, t_final
+  EXPECT_EQ(row[3], "ok");
+  EXPECT_EQ(row[5], "31");
+  EXPECT_EQ(row[6], row[4]);
+  EXPECT_NEAR(std::stod(row[6]), 0.31, 1e-12);
+  fs::remove_all(d);
+}
+
 TEST(SweepEngine, AWorkerKilledOnceIsRetriedAndOneKilledTwiceIsAFailedRow) {
   const Sweep s = standing_sweep();
   const fs::path ref = fresh_dir("ref"), out = fresh_dir("kill");
