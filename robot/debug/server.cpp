@@ -6,6 +6,7 @@
 #include <cstring>
 #include <iostream>
 
+#include "robot/core/thread_priority.hpp"
 #include "robot/debug/server_thread.hpp"
 
 namespace stride::debug {
@@ -22,7 +23,10 @@ DebugServer::DebugServer(ServerOptions options)
   exchange_.wake_fd = wake.get();
   thread_state_ =
       std::make_unique<ServerThread>(options_, exchange_, std::move(listener), std::move(wake));
-  thread_ = std::thread([this] { thread_state_->run(stop_); });
+  thread_ = std::thread([this] {
+    set_normal_priority();  // never at the control loop's real-time priority
+    thread_state_->run(stop_);
+  });
 }
 
 DebugServer::~DebugServer() {

@@ -1,5 +1,6 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
 //   debug_load [--seconds S] [--clients N] [--fields F] [--scene f] [--judge all|streams]
+//              [--rt-priority 1..99]
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
 // to the wall clock, its controller served by a debug server. Three phases of S seconds: no
 // client, then N clients each streaming F fields every frame while one more floods garbage and
@@ -8,7 +9,8 @@
 // period late) and the control step's compute time (modules + the debug exchange) p50/p99/max,
 // and every client's account of its stream. Exit 1 if a criterion fails: an honest stream not
 // complete (every frame received or counted as dropped), or with --judge all a missed frame or
-// a loaded p99 more than 10 % over the quiet one.
+// a loaded p99 more than 10 % over the quiet one. --rt-priority runs the loop under SCHED_FIFO,
+// as `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal).
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,6 +26,7 @@
 #include <vector>
 
 #include "console/session/sim_session.hpp"
+#include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
@@ -41,6 +44,7 @@ struct Options {
   int fields = 50;
   std::string scene = STRIDE_SOURCE_DIR "/scenes/experiments/hip_medium.xml";
   bool judge_timing = true;
+  int rt_priority = 0;  // 0: time-shared
 };
 
 Options read_options(int argc, char** argv) {
@@ -57,6 +61,8 @@ Options read_options(int argc, char** argv) {
       o.scene = value;
     else if (flag == "--judge")
       o.judge_timing = value == "all";
+    else if (flag == "--rt-priority")
+      o.rt_priority = parse_realtime_priority(value, "debug_load: --rt-priority");
     else
       throw Error("debug_load: unknown flag '" + flag + "'");
   }
@@ -163,6 +169,7 @@ int main(int argc, char** argv) {
     debug::DebugServer server(options);
     rt.set_frame_boundary(&server.boundary());
     const std::string at = server.endpoint().text();
+    if (o.rt_priority > 0) set_realtime_priority(o.rt_priority, "debug_load: --rt-priority");
     auto& sim = session.simulation();
 
     std::vector<Phase> phases{{"quiet"}, {"loaded"}, {"quiet again"}};
@@ -199,7 +206,9 @@ int main(int argc, char** argv) {
     }
     std::cout << "debug_load: " << o.clients << " clients x " << o.fields << " fields every "
               << period * 1000 << " ms frame, + garbage flood + connect/drop loop, " << o.seconds
-              << " s per phase\n";
+              << " s per phase, loop "
+              << (o.rt_priority > 0 ? "SCHED_FIFO " + std::to_string(o.rt_priority) : "time-shared")
+              << "\n";
     std::cout.setf(std::ios::fixed);
     std::cout.precision(1);
     for (const Phase* p : {&phases[0], &phases[1], &phases[2], &quiet})
