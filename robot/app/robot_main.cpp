@@ -6,6 +6,7 @@
 #include "robot/app/robot_process.hpp"
 #include "robot/app/stop_signals.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 
@@ -17,15 +18,19 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
   std::unique_ptr<RobotProcess> robot;
   std::unique_ptr<debug::DebugServer> server;
   try {
-    const Flags f = read_flags(
-        args,
-        {"--config", "--lola", "--log", "--debug", "--token-file", "--log-dir", "--rt-priority"},
-        "stride robot");
+    const Flags f = read_flags(args,
+                               {"--config", "--lola", "--log", "--debug", "--token-file",
+                                "--log-dir", "--rt-priority", "--cpu"},
+                               "stride robot");
     if (!f.positional.empty())
       throw Error("stride robot: unexpected argument '" + f.positional[0] + "'");
     const std::string rt_text = f.value_or("--rt-priority", "");
     const int rt_priority =
         rt_text.empty() ? 0 : parse_realtime_priority(rt_text, "stride robot: --rt-priority");
+    const std::string cpu_text = f.value_or("--cpu", "");
+    const int cpu = cpu_text.empty()
+                        ? -1
+                        : static_cast<int>(parse_integer(cpu_text, "stride robot: --cpu", 0, 1023));
     const std::string config_path = f.value_or("--config", "");
     if (config_path.empty()) throw Error("stride robot: --config <robot.xml> is required");
     RobotConfig config = parse_robot_config_file(config_path);
@@ -44,8 +49,9 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
       robot->set_frame_boundary(&server->boundary());
       err << "stride robot: debug server on " << server->endpoint().text() << std::endl;
     }
-    if (rt_priority > 0)  // last, as nothing started here should run at the loop's level
-      set_realtime_priority(rt_priority, "stride robot: --rt-priority");
+    // Last, as nothing started here should share the loop's CPU or level.
+    if (cpu >= 0) set_cpu_affinity({cpu}, "stride robot: --cpu");
+    if (rt_priority > 0) set_realtime_priority(rt_priority, "stride robot: --rt-priority");
   } catch (const Error& e) {
     err << e.what() << std::endl;
     return kRobotBadInput;

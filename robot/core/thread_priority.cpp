@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -24,6 +25,27 @@ void set_realtime_priority(int priority, const std::string& who) {
     throw Error(who + ": cannot run the control loop under SCHED_FIFO priority " +
                 std::to_string(priority) + " (" + std::strerror(errno) +
                 "; it needs root, CAP_SYS_NICE or an rtprio limit in limits.conf)");
+}
+
+void set_cpu_affinity(const std::vector<int>& cpus, const std::string& who) {
+  const int n = static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  for (int c : cpus) {
+    if (c < 0 || c >= n)
+      throw Error(who + ": CPU " + std::to_string(c) + " does not exist (this machine has 0.." +
+                  std::to_string(n - 1) + ")");
+    CPU_SET(c, &set);
+  }
+  if (const int e = pthread_setaffinity_np(pthread_self(), sizeof set, &set); e != 0)
+    throw Error(who + ": cannot run on the CPUs asked (" + std::strerror(e) + ")");
+}
+
+std::vector<int> cpus_except(int cpu) {
+  std::vector<int> rest;
+  for (int c = 0; c < static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN)); ++c)
+    if (c != cpu) rest.push_back(c);
+  return rest.empty() ? std::vector<int>{cpu} : rest;  // one CPU: nowhere else to go
 }
 
 void set_normal_priority() {

@@ -1,6 +1,6 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
 //   debug_load [--seconds S] [--clients N] [--fields F] [--scene f] [--judge all|streams]
-//              [--rt-priority 1..99]
+//              [--rt-priority 1..99] [--cpu K]
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
 // to the wall clock, its controller served by a debug server. Three phases of S seconds: no
 // client, then N clients each streaming F fields every frame while one more floods garbage and
@@ -10,7 +10,9 @@
 // and every client's account of its stream. Exit 1 if a criterion fails: an honest stream not
 // complete (every frame received or counted as dropped), or with --judge all a missed frame or
 // a loaded p99 more than 10 % over the quiet one. --rt-priority runs the loop under SCHED_FIFO,
-// as `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal).
+// as `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal);
+// --cpu gives the loop CPU K alone (the server thread and the peers run on the others), so the
+// network work of the flood, done where its sockets live, stays off the loop's CPU.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -26,6 +28,7 @@
 #include <vector>
 
 #include "console/session/sim_session.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 #include "simulator/scene/scene_parser.hpp"
@@ -45,6 +48,7 @@ struct Options {
   std::string scene = STRIDE_SOURCE_DIR "/scenes/experiments/hip_medium.xml";
   bool judge_timing = true;
   int rt_priority = 0;  // 0: time-shared
+  int cpu = -1;         // -1: any
 };
 
 Options read_options(int argc, char** argv) {
@@ -63,6 +67,8 @@ Options read_options(int argc, char** argv) {
       o.judge_timing = value == "all";
     else if (flag == "--rt-priority")
       o.rt_priority = parse_realtime_priority(value, "debug_load: --rt-priority");
+    else if (flag == "--cpu")
+      o.cpu = static_cast<int>(parse_integer(value, "debug_load: --cpu", 0, 1023));
     else
       throw Error("debug_load: unknown flag '" + flag + "'");
   }
@@ -88,7 +94,11 @@ struct Peer {
   std::string output;  // file with its result line
 };
 
-Peer spawn_peer(const std::vector<std::string>& args, const std::string& output) {
+// Starts a peer on `cpus` (children inherit the starting thread's CPUs), then returns the
+// calling thread to `home`.
+Peer spawn_peer(const std::vector<std::string>& args, const std::string& output,
+                const std::vector<int>& cpus, const std::vector<int>& home) {
+  if (!cpus.empty()) set_cpu_affinity(cpus, "debug_load: --cpu");
   const std::string peer =
       (fs::path(fs::read_symlink("/proc/self/exe")).parent_path() / "debug_peer").string();
   std::vector<std::string> all{peer};
@@ -103,6 +113,7 @@ Peer spawn_peer(const std::vector<std::string>& args, const std::string& output)
   if (posix_spawn(&pid, peer.c_str(), &actions, nullptr, argv.data(), environ) != 0)
     throw Error("debug_load: cannot start " + peer);
   posix_spawn_file_actions_destroy(&actions);
+  if (!home.empty()) set_cpu_affinity(home, "debug_load: --cpu");
   return {pid, output};
 }
 
@@ -166,7 +177,14 @@ int main(int argc, char** argv) {
     options.max_clients = static_cast<std::size_t>(o.clients) + 8;
     std::uint64_t log_lines = 0;
     options.log = [&](const std::string&) { ++log_lines; };  // counted, not printed
+    std::vector<int> loop_cpu, other_cpus;
+    if (o.cpu >= 0) {
+      loop_cpu = {o.cpu};
+      other_cpus = cpus_except(o.cpu);
+      set_cpu_affinity(other_cpus, "debug_load: --cpu");  // the server thread inherits these
+    }
     debug::DebugServer server(options);
+    if (o.cpu >= 0) set_cpu_affinity(loop_cpu, "debug_load: --cpu");
     rt.set_frame_boundary(&server.boundary());
     const std::string at = server.endpoint().text();
     if (o.rt_priority > 0) set_realtime_priority(o.rt_priority, "debug_load: --rt-priority");
@@ -181,9 +199,12 @@ int main(int argc, char** argv) {
     const std::string peer_seconds = std::to_string(o.seconds);
     for (int i = 0; i < o.clients; ++i)
       honest.push_back(spawn_peer({"honest", at, peer_seconds, field_spec(o.fields), "1"},
-                                  (dir / ("honest" + std::to_string(i))).string()));
-    others.push_back(spawn_peer({"garbage", at, peer_seconds}, (dir / "garbage").string()));
-    others.push_back(spawn_peer({"churn", at, peer_seconds}, (dir / "churn").string()));
+                                  (dir / ("honest" + std::to_string(i))).string(), other_cpus,
+                                  loop_cpu));
+    others.push_back(spawn_peer({"garbage", at, peer_seconds}, (dir / "garbage").string(),
+                                other_cpus, loop_cpu));
+    others.push_back(
+        spawn_peer({"churn", at, peer_seconds}, (dir / "churn").string(), other_cpus, loop_cpu));
     run_phase(sim, rt, period, o.seconds + 1.0, phases[1]);  // the peers end within it
     bool streams_ok = true;
     std::vector<std::string> results;
@@ -208,7 +229,7 @@ int main(int argc, char** argv) {
               << period * 1000 << " ms frame, + garbage flood + connect/drop loop, " << o.seconds
               << " s per phase, loop "
               << (o.rt_priority > 0 ? "SCHED_FIFO " + std::to_string(o.rt_priority) : "time-shared")
-              << "\n";
+              << (o.cpu >= 0 ? " on CPU " + std::to_string(o.cpu) + " alone" : "") << "\n";
     std::cout.setf(std::ios::fixed);
     std::cout.precision(1);
     for (const Phase* p : {&phases[0], &phases[1], &phases[2], &quiet})
