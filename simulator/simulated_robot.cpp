@@ -213,6 +213,11 @@ void SimulatedRobot::sample_sensors(double time, const Eigen::Vector3d& gravity)
   delivered_ = s;
 }
 
+const std::vector<double>& SimulatedRobot::sole_loads(int f) const {
+  static const std::vector<double> kNone;
+  return f >= 0 && f < static_cast<int>(fsrs_.size()) ? fsrs_[f].frame_loads() : kNone;
+}
+
 TorsoPose SimulatedRobot::torso_pose() const {
   const Eigen::Isometry3d t = body_->link_pose(model_->root_link);
   const Eigen::Matrix3d& m = t.linear();

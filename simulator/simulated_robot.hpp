@@ -53,6 +53,9 @@ class SimulatedRobot : public hal::HardwareLink {
     return calibration_errors_;
   }
   const hal::SensorFrame& latest_sensors() const { return delivered_; }
+  // The true load on FSR foot `f` (device-file order: 0 left, 1 right) at each physics step of
+  // the last control frame, before the sensors' sharing, noise and saturation; empty if none.
+  const std::vector<double>& sole_loads(int f) const;
   const hal::ActuatorFrame& latest_commands() const { return commands_; }
   SensorSwitches& sensor_switches() { return switches_; }
 

@@ -95,6 +95,7 @@ void Simulation::build() {
   steps_per_frame_ = std::move(steps_per_frame);
   controllers_.resize(robots_.size());
   walk_metrics_.assign(robots_.size(), WalkMetrics());
+  landing_metrics_.assign(robots_.size(), LandingMetrics());
   pushes_ = std::move(pushes);
   steps_ = 0;
 }
@@ -150,6 +151,7 @@ void Simulation::step() {
     if (steps_ % static_cast<std::uint64_t>(steps_per_frame_[i]) != 0) continue;
     robots_[i]->sample_sensors(time(), scene_.physics.gravity);
     walk_metrics_[i].observe(*robots_[i]);
+    landing_metrics_[i].observe(*robots_[i]);
     if (controllers_[i]) controllers_[i](*robots_[i]);
   }
 }

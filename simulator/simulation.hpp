@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "simulator/landing_metrics.hpp"
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/simulated_robot.hpp"
 #include "simulator/walk_metrics.hpp"
@@ -65,6 +66,7 @@ class Simulation {
 
   // Walking figures of robot `i` since the scene (re)started.
   const WalkMetrics& walk_metrics(int robot) const { return walk_metrics_[robot]; }
+  const LandingMetrics& landing_metrics(int robot) const { return landing_metrics_[robot]; }
 
   // FNV-1a over every body's state and the robots' latest sensor frames.
   std::uint64_t state_hash() const;
@@ -82,6 +84,7 @@ class Simulation {
   std::vector<int> steps_per_frame_;
   std::vector<Controller> controllers_;
   std::vector<WalkMetrics> walk_metrics_;
+  std::vector<LandingMetrics> landing_metrics_;
   std::vector<ActivePush> pushes_;
   std::uint64_t steps_ = 0;
 };

@@ -177,14 +177,7 @@ class WalkingJointRequestAssembler final : public Module {
         arms_(c.require<ArmSwingRequest>()),
         out_(c.provide<JointRequest>()) {}
 
-  void update() override {
-    out_.position = legs_.position;
-    out_.stiffness = legs_.stiffness;
-    out_.mode.fill(hal::ServoMode::Position);
-    out_.torque.fill(0);
-    out_.position[index(JointId::LShoulderPitch)] = arms_.left_shoulder_pitch;
-    out_.position[index(JointId::RShoulderPitch)] = arms_.right_shoulder_pitch;
-  }
+  void update() override { assemble_walking_request(legs_.position, legs_.stiffness, arms_, out_); }
 
  private:
   const PostureCorrectedRequest& legs_;
@@ -193,6 +186,17 @@ class WalkingJointRequestAssembler final : public Module {
 };
 
 }  // namespace
+
+void assemble_walking_request(const std::array<double, hal::kNumJoints>& position,
+                              const std::array<double, hal::kNumJoints>& stiffness,
+                              const ArmSwingRequest& arms, JointRequest& out) {
+  out.position = position;
+  out.stiffness = stiffness;
+  out.mode.fill(hal::ServoMode::Position);
+  out.torque.fill(0);
+  out.position[index(JointId::LShoulderPitch)] = arms.left_shoulder_pitch;
+  out.position[index(JointId::RShoulderPitch)] = arms.right_shoulder_pitch;
+}
 
 void register_posture_modules(ModuleRegistry& registry) {
   registry.add<GyroCalibration>("GyroCalibration");

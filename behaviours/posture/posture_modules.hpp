@@ -6,12 +6,27 @@
 //                          WalkingJointRequest, TorsoState -> PostureCorrectedRequest (4.3.3)
 //   ArmSwing               WalkingJointRequest -> ArmSwingRequest            (Sec. 4.4)
 //   WalkingJointRequestAssembler  PostureCorrectedRequest, ArmSwingRequest -> JointRequest
+//   (LandingControl, behaviours/landing, takes the assembler's place with landing control)
+#include <array>
+
 #include "behaviours/posture/arm_swing.hpp"
 #include "behaviours/posture/posture_correction.hpp"
 #include "robot/framework/module_registry.hpp"
 #include "robot/framework/reflect.hpp"
+#include "robot/hal/joint_id.hpp"
+
+namespace stride {
+struct ArmSwingRequest;
+struct JointRequest;
+}  // namespace stride
 
 namespace stride::behaviours {
+
+// The walk's final targets: every joint from the leg targets, in position mode, but the
+// shoulder pitches from arm swing.
+void assemble_walking_request(const std::array<double, hal::kNumJoints>& position,
+                              const std::array<double, hal::kNumJoints>& stiffness,
+                              const ArmSwingRequest& arms, JointRequest& out);
 
 struct GyroCalibrationParameters {
   double alpha = 0.001;  // Sec. 4.3.1

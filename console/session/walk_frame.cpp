@@ -33,11 +33,14 @@ std::optional<WalkPatternInfo> walk_pattern_info(SimSession& session) {
   if (!rt || !on_blackboard(*rt, "WalkingJointRequest")) return std::nullopt;
   WalkPatternInfo info;
   info.module = rt->provider_of("WalkingJointRequest");
-  if (info.module != "PatternWalk" && info.module != "ConventionalWalk") return std::nullopt;
-  update_from_text(info.parameters, rt->get("module:" + info.module));
+  // PushRecoveryWalk plays PatternWalk's pattern (moved by its recovery steps) from `walk.*`.
+  const bool recovery = info.module == "PushRecoveryWalk";
+  if (info.module != "PatternWalk" && info.module != "ConventionalWalk" && !recovery)
+    return std::nullopt;
+  update_from_text(info.parameters, rt->get("module:" + info.module + (recovery ? ".walk" : "")));
   const walking::PatternParameters p = behaviours::walk_pattern_parameters(info.parameters);
-  info.duration = info.module == "PatternWalk" ? walking::StretchedKneePattern(p).duration()
-                                               : walking::ConventionalPattern(p).duration();
+  info.duration = info.module != "ConventionalWalk" ? walking::StretchedKneePattern(p).duration()
+                                                    : walking::ConventionalPattern(p).duration();
   info.start_delay = info.parameters.start_delay;
   return info;
 }
@@ -48,7 +51,7 @@ WalkFrameObserver::WalkFrameObserver(SimSession& session) {
   info_ = walk_pattern_info(session);
   if (info_) {
     const walking::PatternParameters p = behaviours::walk_pattern_parameters(info_->parameters);
-    if (info_->module == "PatternWalk")
+    if (info_->module != "ConventionalWalk")
       pattern_.emplace(walking::StretchedKneePattern(p));
     else
       pattern_.emplace(walking::ConventionalPattern(p));

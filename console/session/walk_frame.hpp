@@ -41,8 +41,8 @@ struct WalkFrame {
   static constexpr auto fields();
 };
 
-// The walking pattern robot 0's controller plays (PatternWalk or ConventionalWalk), read from its
-// parameters when the observer starts.
+// The walking pattern robot 0's controller plays (PatternWalk, PushRecoveryWalk or
+// ConventionalWalk), read from its parameters when the observer starts.
 struct WalkPatternInfo {
   std::string module;      // PatternWalk or ConventionalWalk
   double start_delay = 0;  // s after the first control frame

@@ -35,15 +35,17 @@ std::string field_names() {
   return s;
 }
 
-bool walk_field_exists(std::string_view name) {
+template <class Result>
+bool result_field_exists(std::string_view name) {
   bool found = false;
-  for_each_field<sim::WalkMetricsResult>([&](const auto& f) { found = found || f.name == name; });
+  for_each_field<Result>([&](const auto& f) { found = found || f.name == name; });
   return found;
 }
 
-Cell walk_field(const sim::WalkMetricsResult& w, std::string_view name) {
+template <class Result>
+Cell result_field(const Result& w, std::string_view name) {
   Cell out = 0.0;
-  for_each_field<sim::WalkMetricsResult>([&](const auto& f) {
+  for_each_field<Result>([&](const auto& f) {
     if (f.name != name) return;
     const auto& v = w.*(f.member);
     if constexpr (std::is_enum_v<std::remove_cvref_t<decltype(v)>>)
@@ -71,7 +73,9 @@ Runtime& runtime_of(console::SimSession& s, const std::string& key) {
 const std::string kPerFrameKeys =
     "representation:<Name>.<path>, frame.<field> (WalkFrame: " + field_names<WalkFrame>() + ")";
 const std::string kRunKeys = "walk.<field> (" + field_names<sim::WalkMetricsResult>() +
-                             "), module:<Name>.<path>, pattern.duration, pattern.start_delay, "
+                             "), landing.<field> (" + field_names<sim::LandingMetricsResult>() +
+                             ", touch-downs from the walk's start), module:<Name>.<path>, "
+                             "pattern.duration, pattern.start_delay, "
                              "sim.time, sim.steps, sim.hash, robot.period";
 
 }  // namespace
@@ -83,7 +87,11 @@ void check_key(const std::string& key, bool per_frame) {
     throw Error("unknown key '" + key + "' (WalkFrame fields: " + field_names<WalkFrame>() + ")");
   }
   if (!per_frame) {
-    if (key.rfind("walk.", 0) == 0 && walk_field_exists(key.substr(5))) return;
+    if (key.rfind("walk.", 0) == 0 && result_field_exists<sim::WalkMetricsResult>(key.substr(5)))
+      return;
+    if (key.rfind("landing.", 0) == 0 &&
+        result_field_exists<sim::LandingMetricsResult>(key.substr(8)))
+      return;
     if (key.rfind("module:", 0) == 0 && key.size() > 7) return;
     if (key == "pattern.duration" || key == "pattern.start_delay" || key == "sim.time" ||
         key == "sim.steps" || key == "sim.hash" || key == "robot.period")
@@ -142,7 +150,13 @@ Cell read_key(console::SimSession& session, const console::WalkFrameObserver* wa
   if (key == "sim.steps") return static_cast<double>(sim.steps());
   if (key == "sim.hash") return sim::hash_hex(sim.state_hash());
   if (key == "robot.period") return sim.robot(0).period();
-  if (key.rfind("walk.", 0) == 0) return walk_field(sim.walk_metrics(0).result(), key.substr(5));
+  if (key.rfind("walk.", 0) == 0) return result_field(sim.walk_metrics(0).result(), key.substr(5));
+  if (key.rfind("landing.", 0) == 0) {
+    // Touch-downs of the walk: from its start when robot 0 walks a pattern (not the first drop).
+    const auto pattern = walk ? walk->pattern() : console::walk_pattern_info(session);
+    const double from = pattern ? pattern->start_delay : 0.0;
+    return result_field(sim.landing_metrics(0).result(from), key.substr(8));
+  }
   if (key.rfind("pattern.", 0) == 0) {
     if (!walk || !walk->pattern())
       throw Error(key +

@@ -55,6 +55,7 @@ void FsrDevice::accumulate(const RobotBody& body, const PhysicsWorld& world) {
   const Eigen::Isometry3d foot = body.link_pose(link_);
   const Eigen::Isometry3d inv = foot.inverse();
   const Eigen::Vector3d normal = foot.linear().col(2);  // sole normal in the world
+  double step_load = 0;
   for (const ContactRecord& c : world.contacts()) {
     const bool is_a = c.a->robot == robot_ && c.a->link == link_;
     const bool is_b = c.b->robot == robot_ && c.b->link == link_;
@@ -62,9 +63,11 @@ void FsrDevice::accumulate(const RobotBody& body, const PhysicsWorld& world) {
     const double fn = (is_a ? c.force_on_a : c.force_on_b).dot(normal);
     if (fn <= 0) continue;  // a sensor only measures pressing
     const Eigen::Vector3d p = inv * c.position;
-    load_sum_ += fn;
+    load_sum_ += fn;  // per contact, as before: the frame mean keeps its bits
+    step_load += fn;
     moment_sum_ += fn * p.head<2>();
   }
+  step_loads_.push_back(step_load);
   ++steps_;
 }
 
@@ -79,6 +82,8 @@ std::array<double, 4> FsrDevice::sample(bool noise_on) {
   load_sum_ = 0;
   moment_sum_.setZero();
   steps_ = 0;
+  std::swap(step_loads_, closed_loads_);
+  step_loads_.clear();
   return out;
 }
 

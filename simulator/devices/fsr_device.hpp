@@ -39,6 +39,9 @@ class FsrDevice {
   void accumulate(const RobotBody& body, const PhysicsWorld& world);
   // End of a control frame: mean over the frame's steps, shared out, noise, clamp; resets.
   std::array<double, 4> sample(bool noise_on);
+  // The sole-normal load of each physics step of the frame sample() last closed, before the
+  // sharing, noise and saturation: what the floor really pushed with (N).
+  const std::vector<double>& frame_loads() const { return closed_loads_; }
 
  private:
   FsrSpec spec_;
@@ -49,6 +52,7 @@ class FsrDevice {
   double load_sum_ = 0;
   Eigen::Vector2d moment_sum_ = Eigen::Vector2d::Zero();  // sum of load * (x, y)
   int steps_ = 0;
+  std::vector<double> step_loads_, closed_loads_;  // this frame's, the last closed frame's
 };
 
 }  // namespace stride::sim

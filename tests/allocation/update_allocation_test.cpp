@@ -33,6 +33,7 @@ struct Case {
   double warm_up = 0.1;  // s of first frames not counted (a module may size buffers on its first)
   double seconds = 1.0;  // s simulated in all
   double push_x = 0;     // N on the scene's first push, when the scene has one
+  double push_at = 0;    // s: when that push starts (0: the scene's time)
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
@@ -49,6 +50,7 @@ std::vector<Case> cases() {
   const std::string hip = "scenes/experiments/hip_medium.xml";
   const std::string push = "scenes/experiments/push_stand.xml";
   const std::string landing = "scenes/landing/landing_nao.xml";
+  const std::string recovery = "scenes/experiments/push_recovery_walk.xml";
   // Walks run past the pattern's start at 2 s; the standing pushes past the push at 1.5 s.
   return {
       {"HipWalkRobotConfig", hip, "scenes/robots/nao/config/hip_walk.xml", {}, 0.1, 4.0},
@@ -68,6 +70,10 @@ std::vector<Case> cases() {
       {"SwingLegTracking", "scenes/swing_leg/hanging_nao.xml", "", {}, 0.05, 0.5},
       {"LandingImpedance", landing, "", {}, 0.05, 0.5},
       {"LandingPosition", landing, "", {{"JointRequest", "LandingPosition"}}, 0.05, 0.5},
+      {"LandingControlWalk", hip, "", {{"JointRequest", "LandingControl"}}, 0.1, 3.5},
+      {"PositionBalancePushed", push, "", {{"JointRequest", "PositionBalance"}}, 0.1, 2.5, 25},
+      // A push from behind 1.2 s into the walk that takes a recovery step.
+      {"PushRecoveryWalkPushed", recovery, "", {}, 0.1, 4.0, 35, 3.2},
   };
 }
 
@@ -80,6 +86,7 @@ sim::SceneDescription scene_of(const Case& c) {
     scene.robots[0].period = 0.012;
   }
   if (c.push_x != 0 && !scene.pushes.empty()) scene.pushes[0].force = {c.push_x, 0, 0};
+  if (c.push_at > 0 && !scene.pushes.empty()) scene.pushes[0].start = c.push_at;
   return scene;
 }
 

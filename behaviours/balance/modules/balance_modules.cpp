@@ -12,79 +12,15 @@
 #include "behaviours/balance/modules/balance_outlook.hpp"
 #include "behaviours/balance/modules/balance_representations.hpp"
 #include "behaviours/balance/modules/com_state_estimator.hpp"
+#include "behaviours/balance/modules/hat_excursion.hpp"
+#include "behaviours/balance/modules/position_balance.hpp"
+#include "behaviours/balance/modules/standing_balance.hpp"
 #include "behaviours/stand/stand.hpp"
 #include "robot/representations/frame_info.hpp"
 
 namespace stride::behaviours {
 
 namespace {
-
-// What every strategy shares: the inputs, the posture and the CoM set point (the CoM where the
-// robot stood when balancing started).
-class StandingBalance : public Module {
- protected:
-  explicit StandingBalance(ModuleContext& c)
-      : frame_(c.require<FrameInfo>()),
-        joints_(c.require<JointSensorData>()),
-        com_(c.require<ComState>()),
-        model_(c.require<BalanceModel>()),
-        request_(c.provide<JointRequest>()),
-        posture_(stand_posture(StandParameters{})) {}
-
-  void update() final {
-    hold_posture(request_, posture_, stiffness());
-    if (!com_.valid || !model_.valid) return;
-    if (!x_set_) x_set_ = com_.x;
-    balance();
-  }
-
-  virtual double stiffness() const = 0;
-  // Adds the strategy's corrections to the posture already in request_.
-  virtual void balance() = 0;
-
-  balance::ComState relative_state() const { return {com_.x - *x_set_, com_.xdot}; }
-  balance::ComState absolute_state() const { return {com_.x, com_.xdot}; }
-
-  // Eqs. 7.18-7.19: the PD ZMP, clipped to the sole, applied through the ankles.
-  void ankle_pd(double kp, double kd) {
-    const balance::BalanceParams p = balance_params(model_, 0, 0);
-    const double zmp = balance::pd_demanded_zmp(p, {kp, kd}, absolute_state(), *x_set_);
-    command_ankle_zmp(request_, std::clamp(zmp, p.zmp_min, p.zmp_max), model_.mass_above_ankles,
-                      p.g);
-  }
-
-  const FrameInfo& frame_;
-  const JointSensorData& joints_;
-  const ComState& com_;
-  const BalanceModel& model_;
-  JointRequest& request_;
-  JointAngles posture_;
-  std::optional<double> x_set_;
-};
-
-// One bang-bang HAT excursion (Eqs. 7.24-7.27), then a hold at the peak and a smooth return.
-struct HatExcursion {
-  balance::BalanceParams params;
-  balance::ComState s0;
-  balance::BangBangPlan plan;
-  double start = 0;
-
-  // HAT angle at time `now`; empty once the excursion is over.
-  std::optional<double> theta(double now, double hold_time, double return_time) const {
-    const double t = now - start;
-    const double t2 = plan.profile.t2;
-    const double peak = balance::bang_bang_state(params, s0, plan, t2).theta;
-    if (t < t2) return balance::bang_bang_state(params, s0, plan, t).theta;
-    if (t < t2 + hold_time) return peak;
-    const double s = (t - t2 - hold_time) / return_time;
-    if (s >= 1) return std::nullopt;
-    return peak * (1 - smooth_ramp(s));
-  }
-};
-
-double clamp_theta(const BalanceModel& m, double theta) {
-  return std::clamp(theta, m.theta_max_backward, m.theta_max_forward);
-}
 
 class AnkleBalance final : public StandingBalance {
  public:
@@ -120,15 +56,7 @@ class HipBalance final : public StandingBalance {
     }
     const double hat = clamp_theta(model_, *theta);
     command_hat_angle(request_, posture_, hat);
-    if (params_.keep_com) keep_com_over_ankles(hat);
-  }
-
-  // The flywheel of Sec. 7.4 has no weight: a real trunk bent by theta carries the CoM along by
-  // m_HAT d sin(theta) / m, which tilting the whole body about the ankles takes back.
-  void keep_com_over_ankles(double theta) {
-    const double d = std::sqrt(model_.hat_inertia / model_.hat_mass);
-    const double shift = model_.hat_mass * d * std::sin(theta) / model_.mass;
-    command_body_tilt(request_, posture_, -shift / model_.com_height);
+    if (params_.keep_com) command_body_tilt(request_, posture_, com_keeping_tilt(model_, hat));
   }
 
   const HipBalanceParameters& params_;
@@ -209,6 +137,7 @@ class LqrBalance final : public StandingBalance {
 
 void register_balance_modules(ModuleRegistry& registry) {
   register_com_state_estimator(registry);
+  register_position_balance(registry);
   register_balance_outlook(registry);
   registry.add<AnkleBalance>("AnkleBalance");
   registry.add<HipBalance>("HipBalance");

@@ -1,12 +1,24 @@
 #pragma once
 // Representations of the standing-balance modules (thesis Ch. 7): the estimated CoM state and the
 // robot's numbers for the inverted-pendulum models, both in the ground frame between the feet.
+#include <array>
+#include <string_view>
+
 #include <Eigen/Core>
 
 #include "behaviours/balance/balance_params.hpp"
 #include "robot/framework/reflect.hpp"
 
 namespace stride {
+
+// Where the ground frame of ComState has its origin: midway between the two sole points (standing)
+// or under the sole that carries the robot (walking: the stance foot, chosen by the FSRs).
+enum class GroundOrigin { between_feet, left_sole, right_sole };
+template <>
+struct EnumNames<GroundOrigin> {
+  static constexpr std::string_view type_name = "GroundOrigin";
+  static constexpr std::array<std::string_view, 3> names{"between_feet", "left_sole", "right_sole"};
+};
 
 // Ground frame: origin midway between the two sole points (below the ankles), axes of the left
 // sole (x forward, z up); the thesis' x_cm and the ZMP are measured from the ankle like this.
@@ -17,6 +29,7 @@ struct ComState {
   double com_height = 0;                    // kinematic CoM height z0 above the soles
   Eigen::Vector3d measured_com = Eigen::Vector3d::Zero();  // kinematic CoM, this frame
   Eigen::Vector2d measured_cop = Eigen::Vector2d::Zero();  // FSR centre of pressure, this frame
+  GroundOrigin origin = GroundOrigin::between_feet;
 
   static constexpr std::string_view kTypeName = "ComState";
   static constexpr auto fields() {
@@ -25,7 +38,8 @@ struct ComState {
         field("valid", &S::valid), field("x", &S::x, "m"), field("xdot", &S::xdot, "m/s"),
         field("y", &S::y, "m"), field("ydot", &S::ydot, "m/s"), field("zmp_x", &S::zmp_x, "m"),
         field("zmp_y", &S::zmp_y, "m"), field("com_height", &S::com_height, "m"),
-        field("measured_com", &S::measured_com, "m"), field("measured_cop", &S::measured_cop, "m"));
+        field("measured_com", &S::measured_com, "m"), field("measured_cop", &S::measured_cop, "m"),
+        field("origin", &S::origin));
   }
 };
 

@@ -49,25 +49,38 @@ bool is_leg_link(const std::string& name) {
 
 }  // namespace
 
-Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lola) {
+Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lola,
+                                  GroundOrigin origin) {
   const Eigen::Isometry3d left =
       model::leg_fk(model::Side::Left, leg_angles(model::Side::Left, lola));
   const Eigen::Isometry3d right =
       model::leg_fk(model::Side::Right, leg_angles(model::Side::Right, lola));
+  if (origin == GroundOrigin::right_sole) return right;
   Eigen::Isometry3d g = left;  // standing feet are parallel: the left sole's axes serve both
-  g.translation() = 0.5 * (left.translation() + right.translation());
+  if (origin == GroundOrigin::between_feet)
+    g.translation() = 0.5 * (left.translation() + right.translation());
   return g;
 }
 
+GroundOrigin support_sole(GroundOrigin current, double left_load, double right_load,
+                          double hysteresis) {
+  if (current != GroundOrigin::right_sole && right_load > left_load + hysteresis)
+    return GroundOrigin::right_sole;
+  if (current != GroundOrigin::left_sole && left_load > right_load + hysteresis)
+    return GroundOrigin::left_sole;
+  return current == GroundOrigin::between_feet ? GroundOrigin::left_sole : current;
+}
+
 Eigen::Isometry3d level_ground_from_torso(const std::array<double, hal::kNumJoints>& lola,
-                                          const Eigen::Vector2d& torso_roll_pitch) {
+                                          const Eigen::Vector2d& torso_roll_pitch,
+                                          GroundOrigin origin) {
   // The IMU's z-y-x angles without yaw: a sole that tips about its edge still reads level.
   const Eigen::Matrix3d level = (Eigen::AngleAxisd(torso_roll_pitch.y(), Eigen::Vector3d::UnitY()) *
                                  Eigen::AngleAxisd(torso_roll_pitch.x(), Eigen::Vector3d::UnitX()))
                                     .toRotationMatrix();
   Eigen::Isometry3d g = Eigen::Isometry3d::Identity();
   g.linear() = level;
-  g.translation() = -level * ground_in_torso(lola).translation();
+  g.translation() = -level * ground_in_torso(lola, origin).translation();
   return g;
 }
 
@@ -125,6 +138,13 @@ namespace {
 
 class ComStateEstimator final : public Module {
  public:
+  // Torso frame -> the ground frame with its origin at `origin`.
+  Eigen::Isometry3d ground_from_torso(GroundOrigin origin) const {
+    return params_.use_imu_tilt
+               ? level_ground_from_torso(joints_.position, inertial_.angles, origin)
+               : ground_in_torso(joints_.position, origin).inverse();
+  }
+
   explicit ComStateEstimator(ModuleContext& c)
       : frame_(c.require<FrameInfo>()),
         joints_(c.require<JointSensorData>()),
@@ -141,9 +161,21 @@ class ComStateEstimator final : public Module {
       model_out_ = com_.balance_model(joints_.position);  // first frame: the standing posture
       stand_measured_ = true;
     }
-    const Eigen::Isometry3d torso_to_ground =
-        params_.use_imu_tilt ? level_ground_from_torso(joints_.position, inertial_.angles)
-                             : ground_in_torso(joints_.position).inverse();
+    const GroundOrigin origin = params_.follow_support
+                                    ? support_sole(state_.origin, fsr_.total_left, fsr_.total_right,
+                                                   params_.support_hysteresis)
+                                    : GroundOrigin::between_feet;
+    const Eigen::Isometry3d torso_to_ground = ground_from_torso(origin);
+    if (origin != state_.origin && state_.valid) {
+      // The estimate moves with the origin: the old origin seen from the new one, this frame.
+      const Eigen::Vector3d shift =
+          torso_to_ground * ground_from_torso(state_.origin).inverse() * Eigen::Vector3d::Zero();
+      for (int axis : {0, 3}) {
+        estimate_.x(axis) += shift(axis / 3);
+        estimate_.x(axis + 2) += shift(axis / 3);
+      }
+    }
+    state_.origin = origin;
     const Eigen::Vector3d com = torso_to_ground * com_.in_torso(joints_.position);
     state_.measured_com = com;
     state_.com_height = com.z();

@@ -24,6 +24,10 @@ struct ComStateEstimatorParameters {
   double sigma_force = 0;  // accelerometer force measurement (N); 0 leaves it out
   double g = 9.81;
   bool use_imu_tilt = true;  // level the ground frame with the IMU instead of the left sole
+  // Walking: the origin follows the stance sole (the foot whose FSRs carry more, by at least
+  // support_hysteresis) instead of staying between the feet; the estimate moves with it.
+  bool follow_support = false;
+  double support_hysteresis = 5;  // N
 
   static constexpr std::string_view kTypeName = "ComStateEstimatorParameters";
   static constexpr auto fields() {
@@ -35,17 +39,25 @@ struct ComStateEstimatorParameters {
         field("sigma_com", &P::sigma_com, "m", Range{1e-9, 1}),
         field("sigma_cop", &P::sigma_cop, "m", Range{1e-9, 1}),
         field("sigma_force", &P::sigma_force, "N", Range{0, 1e3}),
-        field("g", &P::g, "m/s^2", Range{0.1, 100}), field("use_imu_tilt", &P::use_imu_tilt));
+        field("g", &P::g, "m/s^2", Range{0.1, 100}), field("use_imu_tilt", &P::use_imu_tilt),
+        field("follow_support", &P::follow_support),
+        field("support_hysteresis", &P::support_hysteresis, "N", Range{0, 1000}));
   }
 };
 
 // Ground frame (see ComState) in the torso frame, from the measured LoLA joint angles.
-Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lola);
+Eigen::Isometry3d ground_in_torso(const std::array<double, hal::kNumJoints>& lola,
+                                  GroundOrigin origin = GroundOrigin::between_feet);
 
-// Torso frame -> gravity-levelled ground frame (origin between the soles, torso's heading) from
-// the IMU's torso roll and pitch.
+// Torso frame -> gravity-levelled ground frame (origin at `origin`, torso's heading) from the
+// IMU's torso roll and pitch.
 Eigen::Isometry3d level_ground_from_torso(const std::array<double, hal::kNumJoints>& lola,
-                                          const Eigen::Vector2d& torso_roll_pitch);
+                                          const Eigen::Vector2d& torso_roll_pitch,
+                                          GroundOrigin origin = GroundOrigin::between_feet);
+
+// The stance sole by the FSRs: the current one unless the other carries `hysteresis` N more.
+GroundOrigin support_sole(GroundOrigin current, double left_load, double right_load,
+                          double hysteresis);
 
 // Whole-body CoM of a RobotModel (root = torso) at the LoLA angles, in the torso frame. Sized
 // at construction: computing allocates nothing.

@@ -37,6 +37,14 @@ double pattern_time(double frame_time, double first_frame_time, double start_del
   return frame_time - first_frame_time - start_delay;
 }
 
+void blend_from_pose(std::array<double, hal::kNumJoints>& request,
+                     const std::array<double, hal::kNumJoints>& start_pose, double elapsed,
+                     double interpolation_time) {
+  const double blend = 0.5 - 0.5 * std::cos(std::numbers::pi * elapsed / interpolation_time);
+  for (int i = 0; i < hal::kNumJoints; ++i)
+    request[i] = start_pose[i] + blend * (request[i] - start_pose[i]);
+}
+
 namespace {
 
 template <class Pattern>
@@ -68,11 +76,7 @@ class PatternPlayer final : public Module {
     show_zmp(sample);
     const double elapsed = frame_.time - *first_time_;
     if (t >= 0 || elapsed >= params_.interpolation_time) return;
-    // Standing up: a cosine blend (zero velocity at both ends) from the measured pose.
-    const double blend =
-        0.5 - 0.5 * std::cos(std::numbers::pi * elapsed / params_.interpolation_time);
-    for (int i = 0; i < hal::kNumJoints; ++i)
-      request_.position[i] = start_pose_[i] + blend * (request_.position[i] - start_pose_[i]);
+    blend_from_pose(request_.position, start_pose_, elapsed, params_.interpolation_time);
   }
 
  private:

@@ -24,6 +24,12 @@ WalkingJointRequest walking_request(const walking::LegJoints& legs);
 // Pattern time at a frame: seconds since the walk started (negative while standing).
 double pattern_time(double frame_time, double first_frame_time, double start_delay);
 
+// Standing up: `request` blended from the measured `start_pose` by a cosine (zero velocity at
+// both ends) `elapsed` seconds into an `interpolation_time` long blend.
+void blend_from_pose(std::array<double, hal::kNumJoints>& request,
+                     const std::array<double, hal::kNumJoints>& start_pose, double elapsed,
+                     double interpolation_time);
+
 void register_walking_modules(ModuleRegistry& registry);
 
 }  // namespace stride::behaviours

@@ -30,12 +30,12 @@ class Footsteps {
   int swings() const { return steps_ + 1; }
   // Forward position of foothold j (= X_j), j in [-1, steps + 1], clamped at the ends.
   double foothold(int j) const;
-
- private:
+  // Swing j (0..steps): which foot, and when it leaves and lands.
   static Foot swing_foot(int j) { return j % 2 == 0 ? Foot::kLeft : Foot::kRight; }
   double swing_start(int j) const;
   double swing_end(int j) const;
 
+ private:
   double T_step_, T_s_, d_0_, H_foot_;
   int steps_;
   Eigen::VectorXd footholds_;  // X_0..X_steps

@@ -1,0 +1,73 @@
+#pragma once
+// What a sole feels when it lands (thesis Ch. 6): for every touch-down of either foot while
+// counting, the impulse the floor gave in the first 10 ms, the largest 10 ms mean of the true
+// vertical load in the 100 ms after it, the largest FSR reading (the sensors' own frame mean,
+// which saturates at 25 N per sensor) in that time, and whether the sole came free again
+// (a rebound). Observed once per control frame from the per-step sole loads. A sweep reads the
+// summary of the touch-downs after the walk's start as `landing.<field>`.
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "robot/framework/reflect.hpp"
+#include "simulator/simulated_robot.hpp"
+
+namespace stride::sim {
+
+struct Touchdown {
+  int foot = 0;            // 0 left, 1 right
+  double time = 0;         // s, first physics step with load
+  double impulse = 0;      // N s in the first 10 ms
+  double peak_force = 0;   // N, largest 10 ms mean of the true load within 100 ms
+  double peak_fsr = 0;     // N, largest FSR total of the foot within 100 ms
+  bool rebounded = false;  // the load fell back below the contact threshold within 100 ms
+};
+
+struct LandingMetricsResult {
+  int touchdowns = 0;
+  double mean_impulse = 0, mean_peak_force = 0, mean_peak_fsr = 0;  // over the touch-downs
+  double max_peak_force = 0, max_peak_fsr = 0;
+  int rebounds = 0;
+
+  static constexpr std::string_view kTypeName = "LandingMetricsResult";
+  static constexpr auto fields() {
+    using L = LandingMetricsResult;
+    return std::make_tuple(
+        field("touchdowns", &L::touchdowns), field("mean_impulse", &L::mean_impulse, "N*s"),
+        field("mean_peak_force", &L::mean_peak_force, "N"),
+        field("mean_peak_fsr", &L::mean_peak_fsr, "N"),
+        field("max_peak_force", &L::max_peak_force, "N"),
+        field("max_peak_fsr", &L::max_peak_fsr, "N"), field("rebounds", &L::rebounds));
+  }
+};
+
+// The means, maxima and rebound count of the touch-downs at or after time `from` (s).
+LandingMetricsResult summarize_touchdowns(const std::vector<Touchdown>& touchdowns, double from);
+
+class LandingMetrics {
+ public:
+  // `contact`: load (N) that means touching; a touch-down needs `airborne` s below it before.
+  explicit LandingMetrics(double contact = 1.0, double airborne = 0.02)
+      : contact_(contact), airborne_(airborne) {}
+  // Once per control frame; touch-downs are recorded only while `counting`, but open ones finish.
+  void observe(const SimulatedRobot& robot, bool counting = true);
+  LandingMetricsResult result(double from = 0) const { return summarize_touchdowns(done_, from); }
+  const std::vector<Touchdown>& touchdowns() const { return done_; }
+
+ private:
+  struct Foot {
+    double unloaded = 1e9;  // s the load has been below contact
+    bool open = false;      // a touch-down within its 100 ms window
+    Touchdown current;
+    std::vector<double> loads;  // per step since the touch-down
+    bool loaded = false;        // has carried more than the rebound threshold since touch-down
+  };
+  void step(Foot& f, int foot, double t, double load, double dt, bool counting);
+  void close(Foot& f);
+
+  double contact_, airborne_;
+  std::array<Foot, 2> feet_;
+  std::vector<Touchdown> done_;
+};
+
+}  // namespace stride::sim
