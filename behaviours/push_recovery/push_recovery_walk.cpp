@@ -86,11 +86,12 @@ class PushRecoveryWalk final : public Module {
 
   void respond(double t, const walking::PatternSample& s) {
     const PushRecoveryParameters& r = params_.recovery;
-    // The plan moved by everything decided so far, seen from the stance sole the estimate uses.
+    // The commanded waist (the plan as far as the changes have blended in), seen from the stance
+    // sole the estimate uses: a step just decided moves the plan as fast as the robot can follow.
     const walking::PatternSample base = pattern_->base().sample(t);
     const Eigen::Vector2d foot = stance_foot(s);
-    const Eigen::Vector2d plan_com = base.waist.head<2>() + pattern_->total_offset() +
-                                     com_offset_.value_or(Eigen::Vector2d::Zero()) - foot;
+    const Eigen::Vector2d plan_com =
+        s.waist.head<2>() + com_offset_.value_or(Eigen::Vector2d::Zero()) - foot;
     const Eigen::Vector2d dev(com_.x - plan_com.x(), com_.y - plan_com.y());
     const Eigen::Vector2d rate(com_.xdot - base.waist_velocity.x(),
                                com_.ydot - base.waist_velocity.y());
@@ -111,6 +112,7 @@ class PushRecoveryWalk final : public Module {
     const bool pushed =
         state_.sagittal != PushResponse::none || state_.lateral != PushResponse::none;
     if (pushed && state_.first_detection < 0) state_.first_detection = frame_.time;
+    if (!pushed) step_armed_ = true;  // back within the walk's own deviation: the next push
     state_.ankle_offset = {
         std::clamp(r.ankle_pitch_gain * beyond(xi.x(), r.threshold), -r.max_ankle, r.max_ankle),
         std::clamp(-r.ankle_roll_gain * beyond(xi.y(), r.lateral_threshold), -r.max_ankle,
@@ -136,6 +138,7 @@ class PushRecoveryWalk final : public Module {
     const PushRecoveryParameters& r = params_.recovery;
     const auto swing = pattern_->swing_to_adjust(t, r.min_swing_time);
     if (!swing) return;
+    if (!step_armed_ && *swing != moved_swing_) return;  // one recovery step per push
     const bool left_swings = walking::Footsteps::swing_foot(*swing) == walking::Foot::kLeft;
     const Eigen::Vector2d want = capture_step(xi, r.step_gain, r.limits(), left_swings);
     // What this swing has already been moved counts against its limits.
@@ -146,6 +149,7 @@ class PushRecoveryWalk final : public Module {
     const auto a = pattern_->adjust_step(t, more, r.min_swing_time);
     if (!a) return;
     moved_swing_ = a->swing;
+    step_armed_ = false;
     moved_ = total;
     ++state_.steps_moved;
     state_.walk_offset = a->total;
@@ -195,6 +199,7 @@ class PushRecoveryWalk final : public Module {
   std::optional<HatExcursion> excursion_;
   std::int64_t beyond_limit_frames_ = 0;
   int moved_swing_ = -1;
+  bool step_armed_ = true;  // a push may move a landing (once, until the deviation settles)
   Eigen::Vector2d moved_ = Eigen::Vector2d::Zero();
 };
 
