@@ -54,13 +54,14 @@ struct PositionBalanceState {
 namespace stride::behaviours {
 
 // Defaults: the PD of Fig. 7.5 and the hip torques of HipBalance; the ankle admittance turns a
-// 1 N m CoP error into 1 rad/s of ankle motion and lets go of an offset in 0.1 s.
+// 1 N m CoP error into 0.02 rad/s of ankle motion and lets go of an offset in 0.25 s (50 times
+// the first gain rocked the standing robot heel to toe with its CoP at the sole's edges).
 struct PositionBalanceParameters {
   BalanceChoice strategy = BalanceChoice::automatic;
-  double kp = 72;               // 1/s^2, Eq. 7.16
-  double kd = 12;               // 1/s
-  double ankle_damping = 1.0;   // N m s/rad: CoP-error torque per ankle speed
-  double ankle_stiffness = 10;  // N m/rad: pulls the offset back to the posture
+  double kp = 72;                // 1/s^2, Eq. 7.16
+  double kd = 12;                // 1/s
+  double ankle_damping = 50;     // N m s/rad: CoP-error torque per ankle speed
+  double ankle_stiffness = 200;  // N m/rad: pulls the offset back to the posture
   double max_ankle_offset = 0.25;
   double margin = 0.01;  // m: the sole less this is the ZMP the ankle aims for
   double tau_forward = 14;
