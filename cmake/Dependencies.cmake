@@ -26,6 +26,8 @@ else()
 endif()
 find_package(PNG REQUIRED)
 find_library(READLINE_LIBRARY readline REQUIRED)
+# pagmo (Debian libpagmo-dev 2.18): the optimiser of `stride tune` (console/tune/optimiser.cpp).
+find_package(Pagmo REQUIRED CONFIG)
 if(STRIDE_TESTS)
   find_package(GTest REQUIRED)
 endif()

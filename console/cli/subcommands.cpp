@@ -20,6 +20,7 @@ int converge_main(Args args, std::ostream& out, std::ostream& err);
 int robot_main(Args args, std::ostream& out, std::ostream& err);
 int lola_main(Args args, std::ostream& out, std::ostream& err);
 int sweep_main(Args args, std::ostream& out, std::ostream& err);
+int tune_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -75,6 +76,12 @@ const std::vector<Subcommand>& subcommands() {
        "the runs of a sweep file (scenes x factors x seeds) on local worker processes, or on MPI "
        "ranks under mpirun/srun; one CSV row per run, tallies printed",
        sweep_main},
+      {"tune",
+       "tune <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet] [--set "
+       "target=value ...] [--physics a=v,b=w] [--no-plots] [--mpi]: a search (pagmo's pso_gen) "
+       "over a tuning file's parameters, each generation one sweep on local workers or MPI "
+       "ranks; the best candidate against the thesis' values on the held-out walks only",
+       tune_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push [--seeds N] [--jobs N] "
        "[--out dir] [--scenes dir] [--sweeps dir] [--resume] [--quiet] [--no-plots] "

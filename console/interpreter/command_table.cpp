@@ -19,7 +19,7 @@ bool is_framework_key(std::string_view key) {
 bool is_value_key(std::string_view key) {
   if (is_framework_key(key)) return true;
   for (std::string_view prefix :
-       {"sim.", "robot.", "log.", "provider:", "override:", "debug:", "sweep."})
+       {"sim.", "robot.", "log.", "provider:", "override:", "debug:", "sweep.", "tune."})
     if (key.starts_with(prefix) && key.size() > prefix.size()) return true;
   return false;
 }
@@ -31,7 +31,7 @@ void need_key(const std::string& key, bool framework_only) {
     throw Error(quote(key) + " is not a key (representation:X" +
                 std::string(framework_only
                                 ? " or module:X)"
-                                : ", module:X, sim.*, robot.*, log.*, sweep.*, provider:X, "
+                                : ", module:X, sim.*, robot.*, log.*, sweep.*, tune.*, provider:X, "
                                   "override:X, debug:X)"));
 }
 
@@ -134,6 +134,9 @@ void check_expect(const Words& a) {
 }
 void check_sweep(const Words& a) {
   parse_sweep_arguments(a);
+}
+void check_tune(const Words& a) {
+  parse_sweep_arguments(a, "tune");
 }
 void check_endpoint(const std::string& text, const char* what) {
   const auto colon = text.rfind(':');
@@ -245,6 +248,10 @@ const std::vector<CommandSpec>& command_table() {
        "run a sweep file (as `stride sweep`); its tallies become sweep.<tally>.<column>[<group>] "
        "keys",
        1, 10, check_sweep},
+      {"tune", "tune <file.xml> [jobs N] [out <dir>] [resume] [overwrite] [quiet]",
+       "run a search over a tuning file (as `stride tune`); its outcome becomes tune.best, "
+       "tune.heldout.thesis|tuned[_sd], tune.param.<name> ... keys",
+       1, 8, check_tune},
       {"echo", "echo <text>", "print text", 0, -1, nullptr},
       {"quit", "quit", "leave the console", 0, 0, nullptr},
   };

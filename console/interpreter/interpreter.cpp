@@ -352,6 +352,7 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "wait") return wait_until(a);
   if (n == "call") return run_script(resolve(a[0]));
   if (n == "sweep") return sweep_.run(a, resolve(a[0]), out_, interrupt_ != nullptr);
+  if (n == "tune") return tune_.run(a, resolve(a[0]), out_, interrupt_ != nullptr);
   if (n == "echo") {
     for (std::size_t i = 0; i < a.size(); ++i) out_ << (i ? " " : "") << a[i];
     out_ << "\n";

@@ -16,6 +16,7 @@
 
 #include "console/interpreter/command_parser.hpp"
 #include "console/interpreter/sweep_command.hpp"
+#include "console/interpreter/tune_command.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/target/local_target.hpp"
 #include "console/target/remote_target.hpp"
@@ -123,6 +124,7 @@ class Interpreter {
   std::chrono::steady_clock::time_point pace_start_;  // realtime: wall time of step 0
   std::uint64_t paced_steps_ = 0;                     // steps since pace_start_
   SweepCommand sweep_;
+  TuneCommand tune_;
 };
 
 }  // namespace stride::console

@@ -22,6 +22,7 @@ SimulationTarget& Interpreter::simulation(const std::string& command) {
 
 std::string Interpreter::value(const std::string& key) {
   if (key.starts_with("sweep.")) return sweep_.value(key);  // the last sweep run here
+  if (key.starts_with("tune.")) return tune_.value(key);    // the last search run here
   if (key.starts_with("log.")) return local_.get(key);      // the console's log player
   return target().get(key);
 }

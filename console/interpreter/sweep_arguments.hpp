@@ -1,5 +1,5 @@
 #pragma once
-// The words after `sweep <file>` in the console: jobs N, out <dir>, seeds N, resume, overwrite,
+// The words after `sweep <file>` (and `tune <file>`) in the console: jobs N, out <dir>, seeds N, resume, overwrite,
 // quiet. Pure parsing, so the command table can check them without the engine.
 #include <string>
 #include <vector>
@@ -12,7 +12,9 @@ struct SweepArguments {
   bool resume = false, overwrite = false, quiet = false;
 };
 
-// `args[0]` is the file; throws stride::Error naming the bad word.
-SweepArguments parse_sweep_arguments(const std::vector<std::string>& args);
+// `args[0]` is the file; throws stride::Error naming the bad word. `tune` takes the same words
+// but seeds (its tuning file names the training and held-out seeds).
+SweepArguments parse_sweep_arguments(const std::vector<std::string>& args,
+                                     const std::string& command = "sweep");
 
 }  // namespace stride::console

@@ -223,4 +223,14 @@ std::vector<std::uint64_t> parse_seeds(const XmlElement& e) {
   return seeds;
 }
 
+SeedsElement parse_seeds_element(const XmlElement& e) {
+  SeedsElement s{parse_seeds(e), e.number_or("heading_spread", 0, Dimension::Angle),
+                 e.number_or("position_spread", 0, Dimension::Length)};
+  if (!(s.heading_spread >= 0 && s.heading_spread <= 0.5))
+    e.fail_attr("heading_spread", "expected 0 to 0.5 rad");
+  if (!(s.position_spread >= 0 && s.position_spread <= 0.5))
+    e.fail_attr("position_spread", "expected 0 to 0.5 m");
+  return s;
+}
+
 }  // namespace stride::sweep

@@ -18,6 +18,12 @@ Factor parse_factor(const XmlElement& e);
 Block parse_block(const XmlElement& e);
 // <seeds from to> | <seeds values> | <seeds count>
 std::vector<std::uint64_t> parse_seeds(const XmlElement& e);
+// The same with the perturbed starts' spreads (heading_spread, position_spread: 0 to 0.5).
+struct SeedsElement {
+  std::vector<std::uint64_t> seeds;
+  double heading_spread = 0, position_spread = 0;  // rad, m
+};
+SeedsElement parse_seeds_element(const XmlElement& e);
 
 // Texts listed in an attribute: split at commas when there is one, otherwise at white space.
 std::vector<std::string> split_list(const std::string& text);

@@ -35,5 +35,8 @@ class MpiSession {
 std::unique_ptr<Executor> mpi_coordinator(MpiSession& session);
 // Every other rank: runs what rank 0 sends until it says stop.
 void mpi_worker(MpiSession& session, const RunFunction& run);
+// Rank 0's `text` to every rank (collective: every rank calls it, between sweeps); the others'
+// argument is ignored. A search tells its ranks each generation's sweep this way.
+std::string mpi_broadcast(MpiSession& session, const std::string& text);
 
 }  // namespace stride::sweep

@@ -49,6 +49,8 @@ SummarySpec::Stat stat_attr(const XmlElement& e) {
                   s + "'");
 }
 
+}  // namespace
+
 void parse_record(const XmlElement& e, RecordSpec& r) {
   e.allow_only({});
   children(e, [&](const XmlElement& c) {
@@ -90,6 +92,8 @@ void parse_record(const XmlElement& e, RecordSpec& r) {
     }
   });
 }
+
+namespace {
 
 TallyColumn parse_tally_column(const XmlElement& c) {
   using K = TallyColumn::Kind;
@@ -171,13 +175,10 @@ void parse_root(const XmlElement& root, SweepSpec& s) {
       s.blocks.push_back(parse_block(c));
     } else if (n == "seeds") {
       if (seeds) c.fail("a second <seeds>");
-      s.seeds = parse_seeds(c), seeds = true;
-      s.start_heading_spread = c.number_or("heading_spread", 0, Dimension::Angle);
-      s.start_position_spread = c.number_or("position_spread", 0, Dimension::Length);
-      if (!(s.start_heading_spread >= 0 && s.start_heading_spread <= 0.5))
-        c.fail_attr("heading_spread", "expected 0 to 0.5 rad");
-      if (!(s.start_position_spread >= 0 && s.start_position_spread <= 0.5))
-        c.fail_attr("position_spread", "expected 0 to 0.5 m");
+      SeedsElement e = parse_seeds_element(c);
+      s.seeds = std::move(e.seeds), seeds = true;
+      s.start_heading_spread = e.heading_spread;
+      s.start_position_spread = e.position_spread;
     } else if (n == "run") {
       c.allow_only({"seconds", "until"});
       if (run || c.has("seconds") == c.has("until"))

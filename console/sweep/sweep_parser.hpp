@@ -5,12 +5,16 @@
 #include <string>
 
 #include "console/sweep/sweep_spec.hpp"
+#include "robot/core/xml_element.hpp"
 
 namespace stride::sweep {
 
 SweepSpec parse_sweep_file(const std::string& path);
 // `text` as if it were the file `virtual_path` (scenes resolve from its directory).
 SweepSpec parse_sweep_text(const std::string& text, const std::string& virtual_path);
+
+// <record>: value, summary, derived and trace children (also a tuning file's <record>).
+void parse_record(const XmlElement& e, RecordSpec& r);
 
 // "walk_end+50ms", "2s", "end", "walk_start - 0.5 s"; throws std::invalid_argument.
 TimePoint parse_time_point(const std::string& text);

@@ -3,53 +3,15 @@
 #include <optional>
 #include <ostream>
 
-#include "console/progress/progress_line.hpp"
-
 #include "console/sweep/factor_parser.hpp"
 #include "console/sweep/mpi_executor.hpp"
+#include "console/sweep/run_progress.hpp"
 #include "console/sweep/sweep_parser.hpp"
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::sweep {
 namespace {
-
-// The progress line (console/progress). The engine reports once before any run (the resumed
-// ones) and after each run; only the runs made now count, so a resumed sweep's rate and ETA are
-// right.
-class RunProgress {
- public:
-  RunProgress(std::ostream& err, std::string label, bool quiet)
-      : err_(err), label_(std::move(label)), settings_(console::progress_settings()) {
-    if (quiet) settings_.mode = console::ProgressMode::Quiet;
-  }
-  void update(std::size_t done, std::size_t failed, std::size_t total) {
-    if (!line_) {
-      done_before_ = done, failed_before_ = failed;
-      line_.emplace(err_,
-                    console::ProgressSpec{.label = label_,
-                                          .total = static_cast<double>(total - done),
-                                          .unit = "walks",
-                                          .failure = "failed"},
-                    settings_);
-      return;
-    }
-    line_->set_done(static_cast<double>(done - done_before_), failed - failed_before_);
-  }
-  void tick() {
-    if (line_) line_->tick();
-  }
-  void finish() {
-    if (line_) line_->finish();
-  }
-
- private:
-  std::ostream& err_;
-  std::string label_;
-  console::ProgressSettings settings_;
-  std::optional<console::ProgressLine> line_;
-  std::size_t done_before_ = 0, failed_before_ = 0;
-};
 
 SweepResult run_here(const SweepRequest& r, const Sweep& sweep, Executor& executor,
                      std::ostream& out, std::ostream& err) {

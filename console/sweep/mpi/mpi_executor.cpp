@@ -151,4 +151,12 @@ void mpi_worker(MpiSession&, const RunFunction& run) {
   }
 }
 
+std::string mpi_broadcast(MpiSession& session, const std::string& text) {
+  std::uint64_t n = session.rank() == 0 ? text.size() : 0;
+  MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  std::string out = session.rank() == 0 ? text : std::string(static_cast<std::size_t>(n), '\0');
+  MPI_Bcast(out.data(), static_cast<int>(n), MPI_BYTE, 0, MPI_COMM_WORLD);
+  return out;
+}
+
 }  // namespace stride::sweep

@@ -19,5 +19,8 @@ std::unique_ptr<Executor> mpi_coordinator(MpiSession&) {
 void mpi_worker(MpiSession&, const RunFunction&) {
   throw Error(mpi_missing_text());
 }
+std::string mpi_broadcast(MpiSession&, const std::string&) {
+  throw Error(mpi_missing_text());
+}
 
 }  // namespace stride::sweep
