@@ -5,7 +5,8 @@
 
 namespace stride::console {
 
-SweepArguments parse_sweep_arguments(const std::vector<std::string>& a, const std::string& command) {
+SweepArguments parse_sweep_arguments(const std::vector<std::string>& a,
+                                     const std::string& command) {
   SweepArguments r;
   const bool seeds = command == "sweep";
   for (std::size_t i = 1; i < a.size(); ++i) {

@@ -1,6 +1,6 @@
 #pragma once
-// The words after `sweep <file>` (and `tune <file>`) in the console: jobs N, out <dir>, seeds N, resume, overwrite,
-// quiet. Pure parsing, so the command table can check them without the engine.
+// The words after `sweep <file>` (and `tune <file>`) in the console: jobs N, out <dir>, seeds N,
+// resume, overwrite, quiet. Pure parsing, so the command table can check them without the engine.
 #include <string>
 #include <vector>
 

@@ -33,7 +33,8 @@ void TuneCommand::run(const std::vector<std::string>& args, const std::string& f
   if (!result) return;
   auto state = std::make_unique<TuneState>();
   state->result = *result;
-  for (const tune::TuneParam& p : tune::request_tune_spec(r).params) state->params.push_back(p.name);
+  for (const tune::TuneParam& p : tune::request_tune_spec(r).params)
+    state->params.push_back(p.name);
   last_ = std::move(state);
   if (!result->complete) throw Error("tune: interrupted; continue with: tune " + file + " resume");
 }

@@ -36,7 +36,8 @@ struct Batch {
     const std::vector<double> objective = (*evaluate)(candidates);
     if (objective.size() != candidates.size()) throw Error("tune: an objective per candidate");
     pagmo::vector_double fitness(objective.size());
-    for (std::size_t i = 0; i < objective.size(); ++i) fitness[i] = -objective[i];  // pagmo minimises
+    for (std::size_t i = 0; i < objective.size(); ++i)
+      fitness[i] = -objective[i];  // pagmo minimises
     return fitness;
   }
 };
@@ -50,8 +51,8 @@ void run_search(const SearchSettings& s, const BatchObjective& evaluate) {
   const Batch batch{&evaluate};
   const pagmo::problem problem{Bounds{s.lower, s.upper}};
   const auto seed = static_cast<unsigned>(s.seed);
-  pagmo::population population(problem, batch, static_cast<pagmo::population::size_type>(s.population),
-                               seed);
+  pagmo::population population(problem, batch,
+                               static_cast<pagmo::population::size_type>(s.population), seed);
   pagmo::pso_gen algorithm(static_cast<unsigned>(s.generations), 0.7298, 2.05, 2.05, 0.5, 5u, 2u,
                            4u, false, seed);
   algorithm.set_bfe(pagmo::bfe{batch});

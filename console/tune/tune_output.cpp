@@ -46,9 +46,11 @@ TuneOutput::TuneOutput(const std::string& dir, const std::string& file_text, boo
       fs::remove_all(d / old, ec);
   }
   write_file("tune.xml", file_text);
-  write_file("manifest.txt", "command: " + command + "\nrevision: " + std::string(console::build_revision()) + "\n");
+  write_file("manifest.txt", "command: " + command +
+                                 "\nrevision: " + std::string(console::build_revision()) + "\n");
   fs::create_directories(d / "generations", ec);
-  if (ec) throw Error("--out: cannot create '" + (d / "generations").string() + "': " + ec.message());
+  if (ec)
+    throw Error("--out: cannot create '" + (d / "generations").string() + "': " + ec.message());
 }
 
 std::string TuneOutput::generation_dir(int generation) const {
@@ -61,7 +63,8 @@ std::string TuneOutput::heldout_dir() const {
   return (fs::path(dir_) / "heldout").string();
 }
 
-void TuneOutput::write_search(const TuneSpec& tune, const std::vector<SearchRecord>& records) const {
+void TuneOutput::write_search(const TuneSpec& tune,
+                              const std::vector<SearchRecord>& records) const {
   std::vector<std::string> header{"generation", "candidate"};
   for (const TuneParam& p : tune.params) header.push_back(p.name);
   for (const char* c : {"objective", "walks", "failed", "best_so_far"}) header.emplace_back(c);

@@ -32,13 +32,13 @@ void children(const XmlElement& e, F&& f) {
 
 TuneParam parse_param(const XmlElement& e) {
   e.allow_only({"name", "target", "min", "max", "thesis", "format"});
-  TuneParam p{e.text("name"),   sweep::split_list(e.text("target")),
-              e.number("min"),  e.number("max"),
-              e.number("thesis"), e.text_or("format", "{}"),
-              e.line()};
+  TuneParam p{
+      e.text("name"),     sweep::split_list(e.text("target")), e.number("min"), e.number("max"),
+      e.number("thesis"), e.text_or("format", "{}"),           e.line()};
   if (p.name.empty() || kReserved.count(p.name))
-    e.fail_attr("name", "'" + p.name + "' is taken (run, status, reason, scene, seed, floor, "
-                        "candidate, objective)");
+    e.fail_attr("name", "'" + p.name +
+                            "' is taken (run, status, reason, scene, seed, floor, "
+                            "candidate, objective)");
   if (p.targets.empty()) e.fail_attr("target", "expected at least one target");
   if (!(std::isfinite(p.min) && std::isfinite(p.max) && p.max > p.min))
     e.fail_attr("max", "expected finite bounds with max > min");
@@ -90,8 +90,8 @@ void parse_search(const XmlElement& e, TuneSpec& s) {
 // One child of <tune>; `once` tracks elements that may appear only once.
 void parse_child(const XmlElement& c, TuneSpec& s, std::set<std::string>& once) {
   const std::string n(c.name());
-  static const std::set<std::string> single = {"train", "heldout", "run", "record", "objective",
-                                               "search"};
+  static const std::set<std::string> single = {"train",  "heldout",   "run",
+                                               "record", "objective", "search"};
   if (single.count(n) && !once.insert(n).second) c.fail("a second <" + n + ">");
   if (n == "set") {
     s.settings.push_back(sweep::parse_set(c));
@@ -172,7 +172,8 @@ void parse_root(const XmlElement& root, TuneSpec& s) {
   if (s.params.empty()) root.fail("expected at least one <param>");
   std::set<std::string> names;
   for (const TuneParam& p : s.params)
-    if (!names.insert(p.name).second) throw error_at(s.file, p.line, "param '" + p.name + "' twice");
+    if (!names.insert(p.name).second)
+      throw error_at(s.file, p.line, "param '" + p.name + "' twice");
   check_floors(root, s);
 }
 

@@ -51,16 +51,16 @@ std::string report_text(const TuneSpec& t, const TuneResult& r) {
   for (std::size_t p = 0; p < t.params.size(); ++p) {
     const double a = t.params[p].thesis, b = r.best.values.at(p);
     const std::string pct = a != 0 ? fixed(100 * (b - a) / std::fabs(a), 1) : "-";
-    std::snprintf(row, sizeof row, "  %-20s %12.5g %12.5g %+12.5g %8s\n",
-                  t.params[p].name.c_str(), a, b, b - a, pct.c_str());
+    std::snprintf(row, sizeof row, "  %-20s %12.5g %12.5g %+12.5g %8s\n", t.params[p].name.c_str(),
+                  a, b, b - a, pct.c_str());
     s += row;
   }
   s += "held-out walks only (floors " + list(t.heldout.floors) + ", seeds " +
        seed_list(t.heldout.seeds) + "), objective mean +- sd over the walks:\n";
   s += line_of("thesis", r.heldout_thesis);
   s += line_of("tuned ", r.heldout_tuned);
-  s += "  tuned - thesis: " +
-       fixed(r.heldout_tuned.objective - r.heldout_thesis.objective, 4) + "\n";
+  s += "  tuned - thesis: " + fixed(r.heldout_tuned.objective - r.heldout_thesis.objective, 4) +
+       "\n";
   return s;
 }
 
@@ -108,6 +108,7 @@ void write_tune_plots(const TuneOutput& output, const std::vector<SearchRecord>&
                       .y_label = "objective [-]",
                       .png_path = path("heldout.png")};
   held.style = "points";
+  held.x_range = "[0.5:" + std::to_string(walks.rows.size()) + ".5]";  // no point on the frame
   plot::render_png(held);
 }
 

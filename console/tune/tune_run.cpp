@@ -92,7 +92,8 @@ class Search {
                                         sweep::SweepResult& result) {
     const sweep::Sweep sweep(std::move(spec), false);
     const sweep::Tallies tallies(sweep);
-    auto executor = executor_(batch);  // after everything that can throw: MPI ranks now wait for runs
+    auto executor =
+        executor_(batch);  // after everything that can throw: MPI ranks now wait for runs
     sweep::SweepOptions o;
     o.out_dir = dir;
     o.resume = r_.resume;
@@ -115,8 +116,8 @@ class Search {
     for (std::size_t c = 0; c < candidates.size(); ++c) b.labels.push_back(std::to_string(c));
     const auto t0 = std::chrono::steady_clock::now();
     sweep::SweepResult swept;
-    const std::string label = "tune " + t_.name + " generation " +
-                              std::to_string(b.generation) + "/" + std::to_string(t_.generations);
+    const std::string label = "tune " + t_.name + " generation " + std::to_string(b.generation) +
+                              "/" + std::to_string(t_.generations);
     const std::vector<CandidateScore> scores =
         run_batch(batch_spec(t_, b), b, output_->generation_dir(b.generation), label, swept);
     std::vector<double> objectives;
@@ -136,10 +137,11 @@ class Search {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!r_.quiet)
       err_ << "tune " << t_.name << ": generation " << b.generation << "/" << t_.generations
-           << " done in " << wall << " s (" << swept.ran << " walks run now): best of generation " << scores[best_here].objective << " (candidate "
-           << best_here << "), best so far " << result.best.score.objective << " (generation "
-           << result.best.generation << ", candidate " << result.best.label << "); "
-           << result.walks << " walks, " << result.failed << " failed\n";
+           << " done in " << wall << " s (" << swept.ran << " walks run now): best of generation "
+           << scores[best_here].objective << " (candidate " << best_here << "), best so far "
+           << result.best.score.objective << " (generation " << result.best.generation
+           << ", candidate " << result.best.label << "); " << result.walks << " walks, "
+           << result.failed << " failed\n";
     return objectives;
   }
 
@@ -232,9 +234,12 @@ std::optional<TuneResult> run_tune(const TuneRequest& r, std::ostream& out, std:
   if (r.out_dir.empty()) throw UsageError("tune: expected an output directory");
   if (!(r.force_mpi || sweep::started_by_mpi_launcher())) {
     const int jobs = r.jobs > 0 ? r.jobs : sweep::hardware_jobs();
-    Search search(r, request_tune_spec(r), [jobs](const Batch&) {
-      return jobs == 1 ? sweep::in_process_executor() : sweep::worker_process_executor(jobs);
-    }, out, err);
+    Search search(
+        r, request_tune_spec(r),
+        [jobs](const Batch&) {
+          return jobs == 1 ? sweep::in_process_executor() : sweep::worker_process_executor(jobs);
+        },
+        out, err);
     checked(search);
     return search.run();
   }
@@ -245,10 +250,13 @@ std::optional<TuneResult> run_tune(const TuneRequest& r, std::ostream& out, std:
     return std::nullopt;
   }
   EndRanks end{mpi};
-  Search search(r, request_tune_spec(r), [&mpi](const Batch& b) {
-    sweep::mpi_broadcast(mpi, encode_batch(b));
-    return sweep::mpi_coordinator(mpi);
-  }, out, err);
+  Search search(
+      r, request_tune_spec(r),
+      [&mpi](const Batch& b) {
+        sweep::mpi_broadcast(mpi, encode_batch(b));
+        return sweep::mpi_coordinator(mpi);
+      },
+      out, err);
   checked(search);
   return search.run();
 }

@@ -17,18 +17,18 @@ namespace stride::tune {
 
 struct TuneRequest {
   std::string file;
-  int jobs = 0;            // walks at once on this machine; 0: every hardware thread
-  bool force_mpi = false;  // --mpi: fail unless MPI can be used
+  int jobs = 0;                          // walks at once on this machine; 0: every hardware thread
+  bool force_mpi = false;                // --mpi: fail unless MPI can be used
   std::vector<sweep::Setting> settings;  // --set / --physics, before everything the file sets
   std::string out_dir;
   bool resume = false, overwrite = false, quiet = false, plots = true;
-  std::string command;          // written to the manifest
-  std::function<bool()> stop;   // polled: true ends the search, output left resumable
+  std::string command;         // written to the manifest
+  std::function<bool()> stop;  // polled: true ends the search, output left resumable
 };
 
 struct TuneResult {
-  bool complete = false;  // every generation and the held-out sweep done
-  int generations = 0;    // generations done (the first, random one included)
+  bool complete = false;              // every generation and the held-out sweep done
+  int generations = 0;                // generations done (the first, random one included)
   std::size_t walks = 0, failed = 0;  // training walks, all generations
   SearchRecord best;                  // the best candidate on the training walks
   CandidateScore heldout_thesis, heldout_tuned;

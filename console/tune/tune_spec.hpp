@@ -43,7 +43,7 @@ struct TuneSpec {
   WalkSet train, heldout;
   sweep::TimePoint until{"end", 0};
   sweep::RecordSpec record;
-  std::string objective;  // an expression over a walk's record (larger is better)
+  std::string objective;    // an expression over a walk's record (larger is better)
   double failed_value = 0;  // a failed walk's objective
   int objective_line = 0;
   int population = 0, generations = 0;  // candidates per generation; generations after the first

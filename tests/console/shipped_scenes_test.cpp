@@ -21,7 +21,9 @@ std::vector<fs::path> shipped_scenes() {
   const fs::path root = fs::path(STRIDE_SOURCE_DIR) / "scenes";
   for (const auto& e : fs::recursive_directory_iterator(root)) {
     const fs::path rel = fs::relative(e.path(), root);
-    const bool sweep = e.path().filename().string().ends_with(".sweep.xml");  // shipped_sweeps
+    const std::string name = e.path().filename().string();
+    // Sweep and tuning files: shipped_sweeps_test, tests/tune.
+    const bool sweep = name.ends_with(".sweep.xml") || name.ends_with(".tune.xml");
     // scenes/hostile/ holds the broken cases of the overnight sweep (tested below).
     if (e.path().extension() == ".xml" && !sweep && *rel.begin() != "robots" &&
         *rel.begin() != "hostile")

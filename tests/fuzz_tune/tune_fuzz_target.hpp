@@ -23,7 +23,8 @@ inline std::string tune_fuzz_input(const std::uint8_t* data, std::size_t size) {
     std::vector<double> thesis;
     for (const tune::TuneParam& p : spec.params) thesis.push_back(p.thesis);
     const sweep::Sweep train(tune::batch_spec(spec, {"generation", 0, {"0"}, {thesis}}), false);
-    sweep::SweepSpec held = tune::batch_spec(spec, {"heldout", 0, {"thesis", "tuned"}, {thesis, thesis}});
+    sweep::SweepSpec held =
+        tune::batch_spec(spec, {"heldout", 0, {"thesis", "tuned"}, {thesis, thesis}});
     tune::add_heldout_tallies(held, train.record_columns());
     const sweep::Sweep heldout(std::move(held), false);
     const sweep::Tallies tallies(heldout);

@@ -150,9 +150,10 @@ TEST(TuneFile, ErrorsAreOneLineNamingFileAndLine) {
       "<search population=\"4\" generations=\"1\"/>\n</tune>\n";
   const std::string param = "<param name=\"k\" target=\"M.k\" min=\"0\" max=\"1\" thesis=\"0\"/>\n";
   EXPECT_EQ(parse_error(head + param + tail), "");
-  EXPECT_EQ(parse_error(head + "<param name=\"k\" target=\"M.k\" min=\"1\" max=\"0\" thesis=\"0\"/>\n" +
-                        tail),
-            "t.xml:3: <param>: attribute 'max': expected finite bounds with max > min");
+  EXPECT_EQ(
+      parse_error(head + "<param name=\"k\" target=\"M.k\" min=\"1\" max=\"0\" thesis=\"0\"/>\n" +
+                  tail),
+      "t.xml:3: <param>: attribute 'max': expected finite bounds with max > min");
   EXPECT_EQ(parse_error(head + param + "<heldout><seeds values=\"3\"/></heldout>\n" + tail),
             "t.xml:6: <heldout>: a second <heldout>");
   EXPECT_EQ(parse_error(head + tail), "t.xml:1: <tune>: expected at least one <param>");
@@ -165,15 +166,30 @@ TEST(TuneFile, ErrorsAreOneLineNamingFileAndLine) {
             "t.xml:5: held-out walk (floor scene, seed 2) is also a training walk");
 }
 
+TEST(TuneFile, ShippedTuningFilesParseAndBindOnTheirScenes) {
+  int files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(STRIDE_SOURCE_DIR) / "scenes")) {
+    if (!e.path().filename().string().ends_with(".tune.xml")) continue;
+    SCOPED_TRACE(e.path().string());
+    const tune::TuneSpec spec = tune::parse_tune_file(e.path().string());
+    std::vector<double> thesis;
+    for (const tune::TuneParam& p : spec.params) thesis.push_back(p.thesis);
+    const sweep::Sweep sweep(tune::batch_spec(spec, {"generation", 0, {"0"}, {thesis}}), true);
+    EXPECT_TRUE(sweep.unloadable_scenes().empty());
+    ++files;
+  }
+  EXPECT_GE(files, 1);
+}
+
 TEST(TuneProcess, BadFileIsOneLineAndRunsNothing) {
   const fs::path dir = fresh("bad");
   std::string text = read(tune_file(dir, "1", 0.02, 4, 1));
   text.replace(text.find("sp_read - 1.2"), 7, "nope");  // an unknown column in the objective
   std::ofstream(dir / "bad.xml") << text;
-  EXPECT_EQ(run_binary({kStride, "tune", (dir / "bad.xml").string(), "--out",
-                        (dir / "out").string()},
-                       dir / "log"),
-            3);
+  EXPECT_EQ(
+      run_binary({kStride, "tune", (dir / "bad.xml").string(), "--out", (dir / "out").string()},
+                 dir / "log"),
+      3);
   const std::string log = read(dir / "log");
   EXPECT_EQ(log.rfind((dir / "bad.xml").string() + ":13: expression '-(nope - 1.2)", 0), 0u) << log;
   EXPECT_NE(log.find("unknown column 'nope'"), std::string::npos) << log;
@@ -299,8 +315,9 @@ TEST(TuneSearchOptimum, FindsTheKnownOptimumOfATinyProblem) {
 TEST(TuneFuzz, CorpusAndMutationsAreAcceptedOrFailWithOneLine) {
   const auto seeds = test::read_corpus("tests/fuzz_tune/corpus");
   ASSERT_GE(seeds.size(), 2u);
-  static const char* const kTokens[] = {"<", ">", "/>", "\"", "=", "nan", "-1", "1e308",
-                                        "<param", "<floor", "<seeds", "floors=\"", "\0"};
+  static const char* const kTokens[] = {"<",      ">",         "/>",    "\"",     "=",
+                                        "nan",    "-1",        "1e308", "<param", "<floor",
+                                        "<seeds", "floors=\"", "\0"};
   std::mt19937_64 rng(32);
   int errors = 0, accepted = 0;
   for (int i = 0; i < 2000; ++i) {
@@ -308,8 +325,8 @@ TEST(TuneFuzz, CorpusAndMutationsAreAcceptedOrFailWithOneLine) {
                                   ? seeds[i]
                                   : test::mutate(seeds[rng() % seeds.size()], rng, kTokens, 0);
     std::string msg;
-    ASSERT_NO_THROW(msg = test::tune_fuzz_input(
-                        reinterpret_cast<const std::uint8_t*>(input.data()), input.size()))
+    ASSERT_NO_THROW(msg = test::tune_fuzz_input(reinterpret_cast<const std::uint8_t*>(input.data()),
+                                                input.size()))
         << "input " << i;
     if (msg.empty()) {
       ++accepted;
