@@ -25,13 +25,6 @@ std::uint64_t fnv1a(std::uint64_t h, std::string_view s) {
   return (h ^ 0xff) * 0x100000001b3ULL;  // a separator, so ("ab","c") != ("a","bc")
 }
 
-std::string read_whole(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string manifest_value(const std::string& text, const std::string& key) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);)
@@ -49,7 +42,7 @@ int open_append(const fs::path& p, bool truncate) {
 std::map<std::int64_t, std::vector<std::string>> read_rows(const fs::path& p,
                                                            const std::vector<std::string>& header,
                                                            std::string& kept) {
-  const std::string text = read_whole(p);
+  const std::string text = read_whole_file(p);
   std::map<std::int64_t, std::vector<std::string>> rows;
   std::size_t start = 0, line_no = 0;
   while (start < text.size()) {
@@ -81,6 +74,44 @@ std::map<std::int64_t, std::vector<std::string>> read_rows(const fs::path& p,
 
 }  // namespace
 
+std::string read_whole_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void create_output_dir(const std::string& dir) {
+  const fs::path d(dir);
+  std::error_code ec;
+  fs::create_directories(d, ec);
+  if (ec || !fs::is_directory(d))
+    throw Error("--out: cannot create directory '" + dir +
+                "': " + (ec ? ec.message() : std::string("not a directory")));
+}
+
+void write_whole_file(const std::string& path, const std::string& text) {
+  const fs::path p(path);
+  const fs::path tmp = p.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(tmp, ignored);  // no half-written file left behind
+      throw Error("cannot write '" + tmp.string() + "'");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, p, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw Error("cannot write '" + p.string() + "': " + ec.message());
+  }
+}
+
 std::string plan_fingerprint(const Sweep& sweep) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
   for (const std::string& c : sweep.csv_header()) h = fnv1a(h, c);
@@ -100,17 +131,13 @@ std::string plan_fingerprint(const Sweep& sweep) {
 SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume, bool overwrite,
                          const std::string& command)
     : sweep_(sweep), dir_(dir) {
+  create_output_dir(dir);
   const fs::path d(dir);
-  std::error_code ec;
-  fs::create_directories(d, ec);
-  if (ec || !fs::is_directory(d))
-    throw Error("--out: cannot create directory '" + dir +
-                "': " + (ec ? ec.message() : std::string("not a directory")));
   const fs::path runs = d / "runs.csv";
   const std::string fingerprint = plan_fingerprint(sweep);
   const std::vector<std::string> header = sweep.csv_header();
   if (resume && fs::exists(runs)) {
-    const std::string was = manifest_value(read_whole(d / "manifest.txt"), "plan");
+    const std::string was = manifest_value(read_whole_file(d / "manifest.txt"), "plan");
     if (was != fingerprint)
       throw Error("--resume: '" + dir + "' holds another sweep's runs (plan " +
                   (was.empty() ? "unknown" : was) + ", this one " + fingerprint +
@@ -135,7 +162,8 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
     << "\nrevision: " << console::build_revision() << "\nplan: " << fingerprint
     << "\nruns: " << sweep.plan().runs.size() << "\ncommand: " << command << "\n";
   write_file("manifest.txt", m.str());
-  if (!sweep.spec().file.empty()) write_file("sweep.xml", read_whole(sweep.spec().file));
+  if (!sweep.spec().file.empty()) write_file("sweep.xml", read_whole_file(sweep.spec().file));
+  std::error_code ec;
   fs::create_directories(d / "traces", ec);
 }
 
@@ -183,25 +211,7 @@ void SweepOutput::sort_rows() {
 }
 
 void SweepOutput::write_file(const std::string& name, const std::string& text) const {
-  const fs::path p = fs::path(dir_) / name;
-  const fs::path tmp = p.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmp, ignored);  // no half-written file left behind
-      throw Error("cannot write '" + tmp.string() + "'");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw Error("cannot write '" + p.string() + "': " + ec.message());
-  }
+  write_whole_file((fs::path(dir_) / name).string(), text);
 }
 
 }  // namespace stride::sweep

@@ -17,6 +17,14 @@
 
 namespace stride::sweep {
 
+// Output files, shared with the tuner's output (console/tune/tune_output.hpp): a file's whole
+// text ("" when it cannot be read); a directory created with its parents (throws "--out: cannot
+// create directory ..."); a file written whole through a temporary file and a rename (throws
+// "cannot write ...", leaving no half-written file).
+std::string read_whole_file(const std::string& path);
+void create_output_dir(const std::string& dir);
+void write_whole_file(const std::string& path, const std::string& text);
+
 // FNV-1a over the header and every run's settings and plan cells: equal plans, equal prints.
 std::string plan_fingerprint(const Sweep& sweep);
 

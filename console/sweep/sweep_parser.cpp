@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -228,27 +229,37 @@ TimePoint parse_time_point(const std::string& text) {
   return {"start", parse_quantity(t, Dimension::Time)};
 }
 
-SweepSpec parse_sweep_text(const std::string& text, const std::string& virtual_path) {
+void parse_xml_root(const std::string& text, const std::string& path, std::string_view root_name,
+                    const std::function<void(const XmlElement&)>& parse) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
-    throw error_at(virtual_path, doc.ErrorLineNum(), xml_error_text(doc));
+    throw error_at(path, doc.ErrorLineNum(), xml_error_text(doc));
   const tinyxml2::XMLElement* root = doc.RootElement();
-  if (!root || std::string_view(root->Name()) != "sweep")
-    throw error_at(virtual_path, root ? root->GetLineNum() : 1,
-                   "expected <sweep> as the root element");
+  if (!root || std::string_view(root->Name()) != root_name)
+    throw error_at(path, root ? root->GetLineNum() : 1,
+                   "expected <" + std::string(root_name) + "> as the root element");
+  parse(XmlElement(root, path));
+}
+
+std::string read_input_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ":0: cannot open " + what);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+SweepSpec parse_sweep_text(const std::string& text, const std::string& virtual_path) {
   SweepSpec s;
   s.file = virtual_path;
-  parse_root(XmlElement(root, s.file), s);
+  parse_xml_root(text, s.file, "sweep", [&](const XmlElement& root) { parse_root(root, s); });
   return s;
 }
 
 SweepSpec parse_sweep_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ":0: cannot open sweep file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_input_file(path, "sweep file");
   try {
-    return parse_sweep_text(ss.str(), path);
+    return parse_sweep_text(text, path);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

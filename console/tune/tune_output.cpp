@@ -10,33 +10,20 @@
 #include "console/build_revision.hpp"
 #include "console/sweep/csv_line.hpp"
 #include "console/sweep/run_plan.hpp"
+#include "console/sweep/sweep_output.hpp"
 #include "robot/core/error.hpp"
 
 namespace stride::tune {
-namespace {
-
 namespace fs = std::filesystem;
-
-std::string read_whole(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-}  // namespace
 
 TuneOutput::TuneOutput(const std::string& dir, const std::string& file_text, bool resume,
                        bool overwrite, const std::string& command)
     : dir_(dir) {
+  sweep::create_output_dir(dir);
   const fs::path d(dir);
   std::error_code ec;
-  fs::create_directories(d, ec);
-  if (ec || !fs::is_directory(d))
-    throw Error("--out: cannot create directory '" + dir +
-                "': " + (ec ? ec.message() : std::string("not a directory")));
   const bool holds = fs::exists(d / "tune.xml") || fs::exists(d / "generations");
-  if (resume && holds && read_whole(d / "tune.xml") != file_text)
+  if (resume && holds && sweep::read_whole_file((d / "tune.xml").string()) != file_text)
     throw Error("--resume: '" + dir + "' holds a search of another tuning file (tune.xml differs)");
   if (!resume && holds) {
     if (!overwrite)
@@ -85,16 +72,7 @@ void TuneOutput::write_search(const TuneSpec& tune,
 }
 
 void TuneOutput::write_file(const std::string& name, const std::string& text) const {
-  const fs::path target = fs::path(dir_) / name, temp = target.string() + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw Error("cannot write '" + temp.string() + "': " + std::strerror(errno));
-  }
-  std::error_code ec;
-  fs::rename(temp, target, ec);
-  if (ec) throw Error("cannot write '" + target.string() + "': " + ec.message());
+  sweep::write_whole_file((fs::path(dir_) / name).string(), text);
 }
 
 }  // namespace stride::tune

@@ -3,17 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <stdexcept>
-
-#include <tinyxml2.h>
 
 #include "console/sweep/factor_parser.hpp"
 #include "console/sweep/sweep_parser.hpp"
 #include "robot/core/error.hpp"
-#include "robot/core/xml_error.hpp"
 
 namespace stride::tune {
 namespace {
@@ -180,26 +175,16 @@ void parse_root(const XmlElement& root, TuneSpec& s) {
 }  // namespace
 
 TuneSpec parse_tune_text(const std::string& text, const std::string& virtual_path) {
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
-    throw error_at(virtual_path, doc.ErrorLineNum(), xml_error_text(doc));
-  const tinyxml2::XMLElement* root = doc.RootElement();
-  if (!root || std::string_view(root->Name()) != "tune")
-    throw error_at(virtual_path, root ? root->GetLineNum() : 1,
-                   "expected <tune> as the root element");
   TuneSpec s;
   s.file = virtual_path;
-  parse_root(XmlElement(root, s.file), s);
+  sweep::parse_xml_root(text, s.file, "tune", [&](const XmlElement& root) { parse_root(root, s); });
   return s;
 }
 
 TuneSpec parse_tune_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ":0: cannot open tuning file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = sweep::read_input_file(path, "tuning file");
   try {
-    return parse_tune_text(ss.str(), path);
+    return parse_tune_text(text, path);
   } catch (const InputError&) {
     throw;
   } catch (const Error& e) {

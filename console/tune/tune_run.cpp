@@ -1,14 +1,13 @@
 #include "console/tune/tune_run.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <memory>
 #include <ostream>
-#include <sstream>
 
 #include "console/sweep/mpi_executor.hpp"
 #include "console/sweep/run_progress.hpp"
 #include "console/sweep/sweep_engine.hpp"
+#include "console/sweep/sweep_output.hpp"
 #include "console/tune/optimiser.hpp"
 #include "console/tune/tune_parser.hpp"
 #include "console/tune/tune_report.hpp"
@@ -21,13 +20,6 @@ struct Stopped {};  // the search was interrupted: its output stays resumable
 
 // Where a batch's walks run (MPI: the ranks are told the batch first).
 using ExecutorFor = std::function<std::unique_ptr<sweep::Executor>(const Batch&)>;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 Batch fixed_batch(const std::string& kind, std::vector<std::string> labels,
                   const std::vector<std::vector<double>>& values) {
@@ -62,7 +54,8 @@ class Search {
   }
 
   TuneResult run() {
-    TuneOutput output(r_.out_dir, read_text(t_.file), r_.resume, r_.overwrite, r_.command);
+    TuneOutput output(r_.out_dir, sweep::read_whole_file(t_.file), r_.resume, r_.overwrite,
+                      r_.command);
     output_ = &output;
     TuneResult result;
     sweep::InterruptGuard guard;

@@ -20,6 +20,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/child_process.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -28,41 +30,12 @@ using namespace std::chrono_literals;
 const std::string kStride = std::string(STRIDE_BINARY_DIR) + "/stride";
 const std::string kSweep = std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/data/stand.sweep.xml";
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+constexpr auto read = &stride::test_support::read_text;
+constexpr auto start = &stride::test_support::start_process;
+constexpr auto finish = &stride::test_support::finish_process;
 
 fs::path fresh(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("stride_sweepcli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
-
-// Starts argv with stdout and stderr in files; its own process group so a kill reaches all.
-pid_t start(const std::vector<std::string>& args, const fs::path& out, const fs::path& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::setpgid(0, 0);
-    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(o, 1), ::dup2(e, 2);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(argv[0], argv.data());
-    std::_Exit(127);
-  }
-  return pid;
-}
-
-int finish(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return stride::test_support::fresh_path("sweepcli", name);
 }
 
 int run(const std::vector<std::string>& args, const fs::path& dir) {

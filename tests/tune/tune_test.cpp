@@ -4,13 +4,9 @@
 // the same rows byte for byte at --jobs 1 and 2; a search killed with -9 and resumed gives the
 // uninterrupted search's rows; the held-out sweep walks only the held-out seeds; the optimiser
 // finds the optimum; the tuning-file fuzz target's corpus and mutations (tests/fuzz_tune).
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -22,7 +18,10 @@
 
 #include "console/tune/tune_parser.hpp"
 #include "console/tune/tune_run.hpp"
+#include "tests/child_process.hpp"
+#include "tests/error_text.hpp"
 #include "tests/fuzz_support/corpus.hpp"
+#include "tests/fuzz_support/fuzz_loop.hpp"
 #include "tests/fuzz_support/mutation.hpp"
 #include "tests/fuzz_tune/tune_fuzz_target.hpp"
 
@@ -34,17 +33,10 @@ using namespace std::chrono_literals;
 
 const std::string kStride = std::string(STRIDE_BINARY_DIR) + "/stride";
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+constexpr auto read = &test_support::read_text;
 
 fs::path fresh(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("stride_tune_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
+  const fs::path d = test_support::fresh_path("tune", name);
   fs::create_directories(d);
   return d;
 }
@@ -114,32 +106,17 @@ std::set<std::string> column(const fs::path& csv, const std::string& name) {
 }
 
 std::string parse_error(const std::string& text) {
-  try {
-    tune::parse_tune_text(text, "t.xml");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test_support::error_of([&] { tune::parse_tune_text(text, "t.xml"); });
 }
 
-int run_binary(const std::vector<std::string>& args, const fs::path& log, bool wait = true,
+// The binary's exit code (its output in `log`); with `started`, returns at once with its pid.
+int run_binary(const std::vector<std::string>& args, const fs::path& log,
                pid_t* started = nullptr) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::setpgid(0, 0);
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(fd, 1), ::dup2(fd, 2);
-    std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(argv[0], argv.data());
-    std::_Exit(127);
-  }
-  if (started) *started = pid;
-  if (!wait) return 0;
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  const pid_t pid = test_support::start_process(args, log, log.string() + ".err");
+  if (started) return *started = pid, 0;
+  const int code = test_support::finish_process(pid);
+  std::ofstream(log, std::ios::app) << read(log.string() + ".err");
+  return code;
 }
 
 TEST(TuneFile, ErrorsAreOneLineNamingFileAndLine) {
@@ -270,7 +247,7 @@ TEST(TuneProcess, KillNineThenResumeGivesTheUninterruptedRows) {
   pid_t pid = -1;
   run_binary({kStride, "tune", file.string(), "--jobs", "1", "--quiet", "--no-plots", "--out",
               (dir / "cut").string()},
-             dir / "cut.log", false, &pid);
+             dir / "cut.log", &pid);
   const fs::path second = dir / "cut" / "generations" / "gen-0001" / "runs.csv";
   const auto lines = [&] {
     const std::string t = read(second);
@@ -318,25 +295,16 @@ TEST(TuneFuzz, CorpusAndMutationsAreAcceptedOrFailWithOneLine) {
   static const char* const kTokens[] = {"<",      ">",         "/>",    "\"",     "=",
                                         "nan",    "-1",        "1e308", "<param", "<floor",
                                         "<seeds", "floors=\"", "\0"};
-  std::mt19937_64 rng(32);
-  int errors = 0, accepted = 0;
-  for (int i = 0; i < 2000; ++i) {
-    const std::string input = i < static_cast<int>(seeds.size())
-                                  ? seeds[i]
-                                  : test::mutate(seeds[rng() % seeds.size()], rng, kTokens, 0);
-    std::string msg;
-    ASSERT_NO_THROW(msg = test::tune_fuzz_input(reinterpret_cast<const std::uint8_t*>(input.data()),
-                                                input.size()))
-        << "input " << i;
-    if (msg.empty()) {
-      ++accepted;
-      continue;
-    }
-    ++errors;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  }
-  EXPECT_GT(errors, 100);
-  EXPECT_GE(accepted, 2);
+  const test::FuzzOutcomes n = test::fuzz_seeds_and_mutations(
+      seeds, 2000, 32,
+      [](const std::string& in) {
+        return test::tune_fuzz_input(reinterpret_cast<const std::uint8_t*>(in.data()), in.size());
+      },
+      [&](const std::string& seed, std::mt19937_64& rng) {
+        return test::mutate(seed, rng, kTokens, 0);
+      });
+  EXPECT_GT(n.errors, 100);
+  EXPECT_GE(n.accepted, 2);
 }
 
 }  // namespace
