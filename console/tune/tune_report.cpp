@@ -50,7 +50,8 @@ std::string report_text(const TuneSpec& t, const TuneResult& r) {
   s += row;
   for (std::size_t p = 0; p < t.params.size(); ++p) {
     const double a = t.params[p].thesis, b = r.best.values.at(p);
-    const std::string pct = a != 0 ? fixed(100 * (b - a) / std::fabs(a), 1) : "-";
+    const double change = 100 * (b - a) / std::fabs(a);
+    const std::string pct = a != 0 ? (change >= 0 ? "+" : "") + fixed(change, 1) : "-";
     std::snprintf(row, sizeof row, "  %-20s %12.5g %12.5g %+12.5g %8s\n", t.params[p].name.c_str(),
                   a, b, b - a, pct.c_str());
     s += row;
