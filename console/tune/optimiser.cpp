@@ -45,9 +45,7 @@ struct Batch {
 }  // namespace
 
 void run_search(const SearchSettings& s, const BatchObjective& evaluate) {
-  // pso_gen, not cmaes: in pagmo 2.18 it is the single-objective method that hands a whole
-  // generation to a batch evaluator (cmaes evaluates one candidate at a time), so a generation
-  // is one sweep.
+  // pso_gen, not cmaes: pagmo 2.18's cmaes has no batch evaluator; a generation must be one sweep.
   const Batch batch{&evaluate};
   const pagmo::problem problem{Bounds{s.lower, s.upper}};
   const auto seed = static_cast<unsigned>(s.seed);
