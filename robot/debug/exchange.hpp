@@ -12,6 +12,7 @@
 
 #include "robot/debug/protocol.hpp"
 #include "robot/debug/spsc_ring.hpp"
+#include "robot/framework/slot.hpp"
 
 namespace stride::debug {
 
@@ -25,7 +26,9 @@ struct Catalogue {
   std::vector<std::string> desc_bytes;  // write_type_desc of each
 };
 
-// A frame's values of the wanted slots, encoded as the log encodes them.
+// A frame's values of the wanted slots. The loop only copies them (copies); the server thread
+// encodes them as the log does (bytes, parts) when it takes the snapshot: encoding is several
+// times a copy's cost and would otherwise lengthen every streamed frame.
 struct Snapshot {
   std::uint64_t generation = 0;  // the catalogue it indexes
   std::int64_t frame = 0;
@@ -38,10 +41,14 @@ struct Snapshot {
   std::vector<std::string> debug_lines;
   std::string debug_stop;
   std::vector<std::pair<std::string, double>> debug_values;
+  std::vector<std::unique_ptr<Slot>> copies;  // per slot: the value at the boundary (or stale)
   std::string bytes;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // per slot: offset, size
   static constexpr std::uint32_t kAbsent = 0xffffffffu;
 };
+
+// Encodes the copied values into bytes and parts (the server thread, before anything reads them).
+void encode_copies(Snapshot& s);
 
 // What the loop knows and the server formats for `list` and `report`.
 struct RobotState {

@@ -146,16 +146,17 @@ bool LoopSide::publish(bool new_frame) {
     s->debug_stop.swap(pending_.stop);
     s->debug_values.assign(runtime_->debug_values().begin(), runtime_->debug_values().end());
   }
-  s->bytes.clear();
   s->parts.assign(slots_.size(), {Snapshot::kAbsent, 0});
-  ByteWriter w(s->bytes);
+  if (s->copies.size() < slots_.size()) s->copies.resize(slots_.size());
   for (std::size_t word = 0; word < wanted_.size(); ++word) {
     for (std::uint64_t bits = wanted_[word]; bits; bits &= bits - 1) {
       const std::size_t i = word * 64 + static_cast<std::size_t>(__builtin_ctzll(bits));
       if (i >= slots_.size()) break;
-      const auto at = static_cast<std::uint32_t>(s->bytes.size());
-      slots_[i]->encode(w);
-      s->parts[i] = {at, static_cast<std::uint32_t>(s->bytes.size() - at)};
+      auto& copy = s->copies[i];
+      // A buffer's first use of a slot, or a re-plan changed its type: the only allocation.
+      if (!copy || copy->type() != slots_[i]->type()) copy = slots_[i]->fresh();
+      slots_[i]->copy_to(*copy);
+      s->parts[i] = {0, 0};  // present; encode_copies() sets offset and size
     }
   }
   LoopMessage m;

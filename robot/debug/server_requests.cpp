@@ -238,6 +238,7 @@ void ServerThread::on_snapshot(std::unique_ptr<Snapshot> s) {
     x_.spent.try_push(s);
     return;
   }
+  encode_copies(*s);
   if (s->new_frame) stream(*s);
   if (latest_) x_.spent.try_push(latest_);
   latest_ = std::move(s);

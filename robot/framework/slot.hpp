@@ -20,6 +20,9 @@ class Slot {
   virtual void decode(std::string_view bytes) = 0;
   // A default-constructed object of the same type.
   virtual std::unique_ptr<Slot> fresh() const = 0;
+  // Copies the value into `to`, a slot of the same type (type() equal); reuses `to`'s storage, so
+  // a warmed-up copy does not allocate.
+  virtual void copy_to(Slot& to) const = 0;
 
   Value value() const {
     std::string bytes;
@@ -56,6 +59,7 @@ class SlotOf final : public Slot {
   void encode(ByteWriter& w) const override { stride::encode(w, value_); }
   void decode(std::string_view bytes) override { from_binary(value_, bytes); }
   std::unique_ptr<Slot> fresh() const override { return std::make_unique<SlotOf<T>>(); }
+  void copy_to(Slot& to) const override { static_cast<SlotOf<T>&>(to).value_ = value_; }
 };
 
 template <class T>
