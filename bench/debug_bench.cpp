@@ -94,7 +94,7 @@ void BM_GetRoundTrip(benchmark::State& state) {
   });
   debug::DebugClient client(server.endpoint(), "");
   for (auto _ : state) {
-    auto reply = client.call(request(debug::Op::Get, "module:Stand"));
+    auto reply = client.call(debug::request(debug::Op::Get, "module:Stand"));
     benchmark::DoNotOptimize(reply.get());
   }
   stop = true;
@@ -112,7 +112,7 @@ void boundary_cost(benchmark::State& state, bool stream) {
   if (stream) {  // the subscription is answered from a frame's snapshot: frames run meanwhile
     std::atomic<bool> subscribed{false};
     std::thread subscribe([&] {
-      debug::Request r = request(debug::Op::Subscribe);
+      debug::Request r = debug::request(debug::Op::Subscribe);
       r.keys = fifty_fields();
       client.call(r);
       subscribed = true;
