@@ -114,8 +114,9 @@ class PushRecoveryWalk final : public Module {
     if (pushed && state_.first_detection < 0) state_.first_detection = frame_.time;
     if (!pushed) step_armed_ = true;  // back within the walk's own deviation: the next push
     state_.ankle_offset = {
-        std::clamp(r.ankle_pitch_gain * beyond(xi.x(), r.threshold), -r.max_ankle, r.max_ankle),
-        std::clamp(-r.ankle_roll_gain * beyond(xi.y(), r.lateral_threshold), -r.max_ankle,
+        std::clamp(r.ankle_pitch_gain * beyond(xi.x(), r.ankle_threshold), -r.max_ankle,
+                   r.max_ankle),
+        std::clamp(-r.ankle_roll_gain * beyond(xi.y(), r.ankle_lateral_threshold), -r.max_ankle,
                    r.max_ankle)};
     start_hat_excursion(px, {dev.x(), rate.x()});
     if (state_.sagittal == PushResponse::step || state_.lateral == PushResponse::step)

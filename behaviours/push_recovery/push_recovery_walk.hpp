@@ -60,7 +60,11 @@ struct PushRecoveryParameters {
   // floor reaches -0.061..0.025 m forward and -0.069..0.054 m sideways)
   double threshold = 0.07;
   double lateral_threshold = 0.08;
-  bool hip = true;                // sagittal hip and combined responses allowed
+  bool hip = true;  // sagittal hip and combined responses allowed
+  // m of capture-point deviation beyond which the stance ankle acts (per axis); the thresholds
+  // above gate the hip, combined and step responses only. At the thresholds (the first
+  // measurement) the ankle stays idle until a push is classified.
+  double ankle_threshold = 0.07, ankle_lateral_threshold = 0.08;
   double ankle_pitch_gain = 1.5;  // rad per m of capture-point deviation beyond the threshold
   double ankle_roll_gain = 1.5;
   double max_ankle = 0.12;  // rad
@@ -83,29 +87,30 @@ struct PushRecoveryParameters {
   static constexpr std::string_view kTypeName = "PushRecoveryParameters";
   static constexpr auto fields() {
     using P = PushRecoveryParameters;
-    return std::make_tuple(field("enabled", &P::enabled),
-                           field("threshold", &P::threshold, "m", Range{0, 0.5}),
-                           field("lateral_threshold", &P::lateral_threshold, "m", Range{0, 0.5}),
-                           field("hip", &P::hip),
-                           field("ankle_pitch_gain", &P::ankle_pitch_gain, "rad/m", Range{0, 20}),
-                           field("ankle_roll_gain", &P::ankle_roll_gain, "rad/m", Range{0, 20}),
-                           field("max_ankle", &P::max_ankle, "rad", Range{0, 0.5}),
-                           field("tau_forward", &P::tau_forward, "N*m", Range{0.01, 100}),
-                           field("tau_backward", &P::tau_backward, "N*m", Range{-100, -0.01}),
-                           field("max_hat", &P::max_hat, "rad", Range{0, 1}),
-                           field("hat_hold_time", &P::hat_hold_time, "s", Range{0, 5}),
-                           field("hat_return_time", &P::hat_return_time, "s", Range{0.01, 5}),
-                           field("step_gain", &P::step_gain, "", Range{0, 3}),
-                           field("max_forward", &P::max_forward, "m", Range{0, 0.15}),
-                           field("max_backward", &P::max_backward, "m", Range{0, 0.15}),
-                           field("max_outward", &P::max_outward, "m", Range{0, 0.15}),
-                           field("max_inward", &P::max_inward, "m", Range{0, 0.1}),
-                           field("min_swing_time", &P::min_swing_time, "s", Range{0, 1}),
-                           field("step_tolerance", &P::step_tolerance, "m", Range{0, 0.1}),
-                           field("lower", &P::lower, "m", Range{0, 0.06}),
-                           field("lower_hold", &P::lower_hold, "s", Range{0, 10}),
-                           field("lower_return", &P::lower_return, "s", Range{0.01, 10}),
-                           field("com_offset_time", &P::com_offset_time, "s", Range{0.01, 10}));
+    return std::make_tuple(
+        field("enabled", &P::enabled), field("threshold", &P::threshold, "m", Range{0, 0.5}),
+        field("lateral_threshold", &P::lateral_threshold, "m", Range{0, 0.5}),
+        field("hip", &P::hip), field("ankle_threshold", &P::ankle_threshold, "m", Range{0, 0.5}),
+        field("ankle_lateral_threshold", &P::ankle_lateral_threshold, "m", Range{0, 0.5}),
+        field("ankle_pitch_gain", &P::ankle_pitch_gain, "rad/m", Range{0, 20}),
+        field("ankle_roll_gain", &P::ankle_roll_gain, "rad/m", Range{0, 20}),
+        field("max_ankle", &P::max_ankle, "rad", Range{0, 0.5}),
+        field("tau_forward", &P::tau_forward, "N*m", Range{0.01, 100}),
+        field("tau_backward", &P::tau_backward, "N*m", Range{-100, -0.01}),
+        field("max_hat", &P::max_hat, "rad", Range{0, 1}),
+        field("hat_hold_time", &P::hat_hold_time, "s", Range{0, 5}),
+        field("hat_return_time", &P::hat_return_time, "s", Range{0.01, 5}),
+        field("step_gain", &P::step_gain, "", Range{0, 3}),
+        field("max_forward", &P::max_forward, "m", Range{0, 0.15}),
+        field("max_backward", &P::max_backward, "m", Range{0, 0.15}),
+        field("max_outward", &P::max_outward, "m", Range{0, 0.15}),
+        field("max_inward", &P::max_inward, "m", Range{0, 0.1}),
+        field("min_swing_time", &P::min_swing_time, "s", Range{0, 1}),
+        field("step_tolerance", &P::step_tolerance, "m", Range{0, 0.1}),
+        field("lower", &P::lower, "m", Range{0, 0.06}),
+        field("lower_hold", &P::lower_hold, "s", Range{0, 10}),
+        field("lower_return", &P::lower_return, "s", Range{0.01, 10}),
+        field("com_offset_time", &P::com_offset_time, "s", Range{0.01, 10}));
   }
 };
 

@@ -1,6 +1,6 @@
 // `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--sweeps dir]
 // [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] [--physics a=v,b=w]
-// [--cases a,b]`: the thesis'
+// [--cases a,b] [--only column=a,b ...]`: the thesis'
 // Chapter 4 experiments. All but kalman are sweep files in scenes/experiments run by the sweep
 // engine (`stride sweep` runs the same files); --jobs walks at once (default: hardware threads),
 // the results do not depend on it; under mpirun the walks spread over the ranks.
@@ -29,8 +29,9 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.plots = !a.flag("--no-plots");  // before positional(), which skips a flag's value
     o.resume = a.flag("--resume");
     o.quiet = a.flag("--quiet");
-    const std::string name =
-        a.positional("experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push");
+    const std::string name = a.positional(
+        "experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
+        "push-recovery");
     if (a.has("--seeds")) {
       const std::uint64_t n = a.unsigned_integer("--seeds");
       if (n < 1 || n > 1000) throw UsageError("stride experiment: --seeds: expected 1..1000");
@@ -65,6 +66,11 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
         if (!item.empty()) o.cases.push_back(item);
       if (o.cases.empty())
         throw UsageError("stride experiment posture: --cases: expected a,b,... of case names");
+    }
+    try {
+      for (const std::string& s : a.texts("--only")) o.only.push_back(sweep::parse_only(s));
+    } catch (const Error& e) {
+      throw UsageError(e.what());  // a malformed --only
     }
     a.finish();
     if (!o.out_dir.empty()) console::check_output_dir("stride experiment: --out", o.out_dir);

@@ -83,12 +83,13 @@ const std::vector<Subcommand>& subcommands() {
        "ranks; the best candidate against the thesis' values on the held-out walks only",
        tune_main},
       {"experiment",
-       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push [--seeds N] [--jobs N] "
-       "[--out dir] [--scenes dir] [--sweeps dir] [--resume] [--quiet] [--no-plots] "
-       "[--set Module.field=value ...] [--cases a,b]: Ch. 4 experiments, the sweep files "
+       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
+       "push-recovery [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--sweeps dir] [--resume] "
+       "[--quiet] [--no-plots] [--set Module.field=value ...] [--physics a=v,b=w] [--cases a,b] "
+       "[--only column=a,b ...]: the experiments, the sweep files "
        "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
        "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "
-       "hip or none_fast)",
+       "hip or none_fast; --only: runs with these levels, e.g. seed=1,2)",
        experiment_main},
   };
   return table;

@@ -8,6 +8,7 @@
 #include "console/experiments/fastest_search.hpp"
 #include "console/experiments/kalman_experiment.hpp"
 #include "console/experiments/posture_figures.hpp"
+#include "console/experiments/push_figures.hpp"
 #include "console/sweep/sweep_request.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
@@ -16,7 +17,8 @@
 namespace stride::experiments {
 namespace {
 
-constexpr std::array kSweeps = {"posture", "knee-energy", "fastest", "arm-swing", "gains", "push"};
+constexpr std::array kSweeps = {"posture", "knee-energy", "fastest",       "arm-swing",
+                                "gains",   "push",        "position-push", "push-recovery"};
 
 }  // namespace
 
@@ -66,6 +68,7 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   r.options.resume = o.resume;
   r.options.plots = o.plots;
   r.options.command = o.command;
+  r.options.only = o.only;
   if (!o.cases.empty()) {
     r.options.only.push_back(
         {"case", posture_case_levels(sweep::Sweep(sweep::request_spec(r), false), o.cases)});
@@ -75,6 +78,8 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   if (!result) return 0;  // an MPI worker rank
   if (!result->complete) return 130;
   if (name == "posture" && !o.out_dir.empty()) write_posture_figures(o.out_dir, *result, o.plots);
+  if (name == "position-push" && !o.out_dir.empty()) write_phase_portraits(o.out_dir, o.plots);
+  if (name == "push-recovery" && !o.out_dir.empty()) write_push_map(o.out_dir, o.plots);
   if (result->failed == 0) return 0;
   err << "stride experiment " << name << ": " << result->failed
       << " walk(s) failed (listed with their reasons above)\n";

@@ -27,6 +27,8 @@ struct ExperimentOptions {
   // --cases a,b: the posture cases to run, each a scene name or a strategy (none|hip|ankle);
   // empty: all nine.
   std::vector<std::string> cases;
+  // --only column=a,b: only the runs with these levels (seed-major studies: --only seed=1,2).
+  std::vector<std::pair<std::string, std::vector<std::string>>> only;
   std::string command;  // the command line, for a sweep's manifest
 };
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "behaviours/balance/modules/balance_modules.hpp"
+#include "behaviours/balance/modules/balance_outlook.hpp"
 #include "behaviours/balance/modules/balance_representations.hpp"
 #include "behaviours/balance/strategy_classifier.hpp"
 #include "tests/push/push_scene.hpp"
@@ -67,6 +68,37 @@ TEST(BalanceModules, AVeryLargePushIsPredictedNoneAndFalls) {
     fell = sim.robot(0).fallen();
   }
   EXPECT_TRUE(fell);
+}
+
+TEST(BalanceModules, TheOutlookStatesEachBoundaryAsACaptureInterval) {
+  sim::SceneDescription scene = sim::parse_scene_file(scene_path());
+  scene.robots[0].controller.providers["BalancePrediction"] = "BalanceOutlook";
+  console::SimSession session(std::move(scene));
+  session.simulation().run_for(0.5);
+  const auto& rt = *session.runtime(0);
+  const BalancePrediction& p = rt.representation<BalancePrediction>();
+  const BalanceModel& m = rt.representation<BalanceModel>();
+  const ComState& c = rt.representation<ComState>();
+  ASSERT_TRUE(p.valid);
+  EXPECT_NEAR(p.omega, std::sqrt(9.81 / m.com_height), 1e-12);  // Eq. 7.1
+  EXPECT_NEAR(p.omega, 6.03, 0.05);                             // z_cm about 0.27 m standing
+  EXPECT_NEAR(p.capture_point, c.x + c.xdot / p.omega, 1e-12);
+  // The ankle's interval is the sole (Eq. 7.13): 6 cm behind to 10 cm ahead of the ankles.
+  EXPECT_NEAR(p.ankle_lo, -0.06, 1e-9);
+  EXPECT_NEAR(p.ankle_hi, 0.10, 1e-9);
+  // The hip's and the combined intervals are those of Eqs. 7.30 and 7.37 for the outlook's
+  // 14 N m hips; the combined one holds the other two.
+  const balance::BalanceParams params = balance_params(m, 14, -14);
+  const balance::HipBoundaries hip = balance::hip_boundaries(params);
+  const balance::CombinedBoundaries both = balance::combined_boundaries(params);
+  EXPECT_EQ(p.hip_lo, hip.backward);
+  EXPECT_EQ(p.hip_hi, hip.forward);
+  EXPECT_EQ(p.combined_lo, both.backward);
+  EXPECT_EQ(p.combined_hi, both.forward);
+  EXPECT_NEAR(p.hip_lo, -0.0233, 0.002);
+  EXPECT_NEAR(p.hip_hi, 0.0338, 0.002);
+  EXPECT_LT(p.combined_lo, std::min(p.ankle_lo, p.hip_lo));
+  EXPECT_GT(p.combined_hi, std::max(p.ankle_hi, p.hip_hi));
 }
 
 }  // namespace

@@ -26,6 +26,10 @@ class BalanceOutlook final : public Module {
     out_.hip_recovers = c.hip_recovers;
     out_.combined_recovers = c.combined_recovers;
     out_.strategy = static_cast<std::int32_t>(c.strategy);
+    out_.omega = p.omega();
+    out_.ankle_lo = c.ankle.lo, out_.ankle_hi = c.ankle.hi;
+    out_.hip_lo = c.hip.lo, out_.hip_hi = c.hip.hi;
+    out_.combined_lo = c.combined.lo, out_.combined_hi = c.combined.hi;
   }
 
  private:

@@ -20,6 +20,12 @@ struct BalancePrediction {
   bool combined_recovers = false;  // Eq. 7.37: both together
   // The least effort that recovers: 0 ankle, 1 hip, 2 combined, 3 none (balance::Strategy).
   std::int32_t strategy = 3;
+  // The boundaries as capture-point intervals [lo, hi] (in the (x, xdot) plane the lines
+  // xdot = omega (lo - x) and omega (hi - x)), for phase portraits against them.
+  double omega = 0;                         // 1/s
+  double ankle_lo = 0, ankle_hi = 0;        // m, Eq. 7.13
+  double hip_lo = 0, hip_hi = 0;            // m, Eq. 7.30
+  double combined_lo = 0, combined_hi = 0;  // m, Eq. 7.37
 
   static constexpr std::string_view kTypeName = "BalancePrediction";
   static constexpr auto fields() {
@@ -27,7 +33,11 @@ struct BalancePrediction {
     return std::make_tuple(
         field("valid", &P::valid), field("capture_point", &P::capture_point, "m"),
         field("ankle_recovers", &P::ankle_recovers), field("hip_recovers", &P::hip_recovers),
-        field("combined_recovers", &P::combined_recovers), field("strategy", &P::strategy));
+        field("combined_recovers", &P::combined_recovers), field("strategy", &P::strategy),
+        field("omega", &P::omega, "1/s"), field("ankle_lo", &P::ankle_lo, "m"),
+        field("ankle_hi", &P::ankle_hi, "m"), field("hip_lo", &P::hip_lo, "m"),
+        field("hip_hi", &P::hip_hi, "m"), field("combined_lo", &P::combined_lo, "m"),
+        field("combined_hi", &P::combined_hi, "m"));
   }
 };
 

@@ -1,0 +1,243 @@
+#include "console/experiments/push_figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "console/plot/gnuplot_plot.hpp"
+#include "console/plot/run_figures.hpp"
+#include "console/sweep/csv_line.hpp"
+#include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
+#include "robot/core/output_file.hpp"
+
+namespace stride::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot be read");
+  std::vector<std::vector<std::string>> lines;
+  for (std::string line; std::getline(in, line);) {
+    auto cells = sweep::parse_csv_line(line);
+    if (!cells)
+      throw Error(path + ":" + std::to_string(lines.size() + 1) + ": a quoted field not closed");
+    lines.push_back(std::move(*cells));
+  }
+  if (lines.empty()) throw Error(path + ": empty (expected a header line)");
+  return lines;
+}
+
+double number_at(const RunsCsv& runs, const std::vector<std::string>& row,
+                 const std::string& name) {
+  return parse_number(row.at(runs.column(name)), runs.path + ": column " + name);
+}
+
+// The impulses drawn in a phase portrait: recovered and fallen pushes both ways, few enough to
+// tell the curves apart.
+constexpr double kPortraitImpulses[] = {-3, -2, -1, 1, 2, 3};
+
+// One traced run: its (x, capture point) pairs.
+std::vector<std::pair<double, double>> trace_points(const std::string& path) {
+  const auto lines = read_csv(path);
+  const std::vector<std::string>& header = lines.front();
+  std::vector<std::size_t> cols;
+  for (const char* c : {"x", "capture_point"}) {
+    const auto it = std::find(header.begin(), header.end(), c);
+    if (it == header.end()) throw Error(path + ": no column '" + c + "'");
+    cols.push_back(static_cast<std::size_t>(it - header.begin()));
+  }
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    points.emplace_back(parse_number(lines[i].at(cols[0]), path + ": x"),
+                        parse_number(lines[i].at(cols[1]), path + ": capture_point"));
+  return points;
+}
+
+// The Ch. 7 boundaries of one traced run in the capture-point form: each strategy's interval
+// [lo, hi] of x + xdot / omega, dashed, one colour per strategy (after the six curves').
+std::vector<plot::Reference> boundaries(const RunsCsv& runs, const std::vector<std::string>& row) {
+  std::vector<plot::Reference> refs;
+  int colour = 6;
+  for (const auto& [key, label] :
+       {std::pair{"ankle", "ankle (Eq. 7.13)"}, std::pair{"hip", "hip (Eq. 7.30)"},
+        std::pair{"combined", "combined (Eq. 7.37)"}}) {
+    for (const char* end : {"lo", "hi"})
+      refs.push_back({number_at(runs, row, std::string(key) + "_" + end),
+                      std::string(label) + (end[0] == 'l' ? " back" : " front"), false,
+                      colour < 8 ? colour : -1});
+    ++colour;
+  }
+  return refs;
+}
+
+std::string outcome(const RunsCsv& runs, const std::vector<std::string>& row) {
+  if (number_at(runs, row, "recovered") != 0) return "recovered";
+  return number_at(runs, row, "fell") != 0 ? "fell" : "feet moved";
+}
+
+}  // namespace
+
+std::size_t RunsCsv::column(const std::string& name) const {
+  const auto it = std::find(header.begin(), header.end(), name);
+  if (it == header.end()) throw Error(path + ": no column '" + name + "'");
+  return static_cast<std::size_t>(it - header.begin());
+}
+
+RunsCsv read_runs_csv(const std::string& out_dir) {
+  RunsCsv runs;
+  runs.path = (fs::path(out_dir) / "runs.csv").string();
+  auto lines = read_csv(runs.path);
+  runs.header = std::move(lines.front());
+  const std::size_t status = runs.column("status");
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    if (lines[i].size() == runs.header.size() && lines[i][status] == "ok")
+      runs.rows.push_back(std::move(lines[i]));
+  return runs;
+}
+
+namespace {
+
+// One control's portrait: the runs' curves side by side in one CSV (x_k, cp_k), NaN-padded.
+void portrait(const std::string& out_dir, const std::string& control,
+              const std::vector<std::pair<std::string, std::string>>& traces,
+              const std::vector<plot::Reference>& refs, bool png) {
+  plot::Table table;
+  plot::PlotSpec spec;
+  std::vector<std::vector<std::pair<double, double>>> curves;
+  std::size_t longest = 0;
+  for (std::size_t k = 0; k < traces.size(); ++k) {
+    const std::string id = std::to_string(k + 1);
+    table.columns.push_back("x_" + id);
+    table.columns.push_back("cp_" + id);
+    spec.series.push_back({"cp_" + id, traces[k].first, "x_" + id});
+    curves.push_back(trace_points(traces[k].second));
+    longest = std::max(longest, curves.back().size());
+  }
+  for (std::size_t i = 0; i < longest; ++i) {
+    std::vector<double> row;
+    for (const auto& c : curves) {
+      row.push_back(i < c.size() ? c[i].first : NAN);
+      row.push_back(i < c.size() ? c[i].second : NAN);
+    }
+    table.add_row(std::move(row));
+  }
+  const std::string stem = (fs::path(out_dir) / ("phase_" + control)).string();
+  plot::write_csv(stem + ".csv", table);
+  if (!png) return;
+  spec.csv_path = stem + ".csv";
+  spec.png_path = stem + ".png";
+  spec.x_column = table.columns.front();
+  spec.title = "Standing NAO, " + control +
+               ": CoM after a 0.05 s torso push against the Ch. 7 boundaries (seed 1)";
+  spec.x_label = "CoM x [m]";
+  spec.y_label = "capture point x + xdot/omega [m]";
+  spec.x_range = "[-0.06:0.10]";
+  spec.y_range = "[-0.15:0.2]";
+  spec.references = refs;
+  plot::render_png(spec);
+}
+
+}  // namespace
+
+void write_phase_portraits(const std::string& out_dir, bool png) {
+  const RunsCsv runs = read_runs_csv(out_dir);
+  // per control: its traced runs (label, trace file) and the boundaries
+  std::map<std::string, std::vector<std::pair<std::string, std::string>>> traces;
+  std::map<std::string, std::vector<plot::Reference>> refs;
+  for (const auto& row : runs.rows) {
+    const fs::path trace =
+        fs::path(out_dir) / "traces" / ("run-" + row[runs.column("run")] + ".csv");
+    const double impulse = number_at(runs, row, "impulse");
+    if (!fs::exists(trace) || std::find(std::begin(kPortraitImpulses), std::end(kPortraitImpulses),
+                                        impulse) == std::end(kPortraitImpulses))
+      continue;
+    const std::string& control = row[runs.column("control")];
+    traces[control].emplace_back(row[runs.column("impulse")] + " N s, " + outcome(runs, row),
+                                 trace.string());
+    if (!refs.count(control)) refs[control] = boundaries(runs, row);
+  }
+  const bool draw = png && !plot::png_terminal().empty();
+  for (const auto& [control, list] : traces)
+    portrait(out_dir, control, list, refs.at(control), draw);
+}
+
+std::vector<MapCell> push_map_cells(const RunsCsv& runs) {
+  std::vector<MapCell> cells;
+  for (const auto& row : runs.rows) {
+    MapCell key{row[runs.column("control")], row[runs.column("dir")], number_at(runs, row, "N"),
+                number_at(runs, row, "phase")};
+    if (key.direction == "none") continue;
+    auto it = std::find_if(cells.begin(), cells.end(), [&](const MapCell& c) {
+      return c.control == key.control && c.direction == key.direction && c.push == key.push &&
+             c.phase == key.phase;
+    });
+    if (it == cells.end()) it = cells.insert(cells.end(), key);
+    ++it->walks;
+    it->lost += number_at(runs, row, "lost") != 0 ? 1 : 0;
+  }
+  return cells;
+}
+
+namespace {
+
+// One heat map per control side by side: x the gait phase, y the push, colour the share of walks
+// lost, each cell labelled lost/walks. The data go into the script, so the .gp redraws alone.
+std::string map_script(const std::vector<MapCell>& cells, const std::string& direction,
+                       const std::string& png, const std::vector<std::string>& controls) {
+  std::ostringstream s;
+  s << "set terminal " << plot::png_terminal() << " size 1200,520\n";
+  s << "set output '" << png << "'\n";
+  s << "set multiplot layout 1," << controls.size() << " title 'Walking NAO (medium, 3 mm floor) "
+    << "pushed " << direction << " on the torso for 0.1 s: walks lost of the seeds' noenhanced\n";
+  s << "set xlabel 'push start [fraction of the stride after 6 s]'\n";
+  s << "set ylabel 'push [N for 0.1 s]'\nset cblabel 'walks lost [fraction of the seeds]'\n";
+  s << "set cbrange [0:1]\nset palette defined (0 'white', 0.5 'orange', 1 'red')\n";
+  s << "set xrange [-0.125:0.875]\nset yrange [5:65]\nset xtics 0.25\nset ytics 10\n";
+  for (std::size_t k = 0; k < controls.size(); ++k) {
+    const std::string& control = controls[k];
+    s << "$map" << k << " << EOD\n";
+    for (const MapCell& c : cells)
+      if (c.control == control && c.direction == direction)
+        s << c.phase << " " << c.push << " " << static_cast<double>(c.lost) / c.walks << " "
+          << c.lost << " " << c.walks << "\n";
+    s << "EOD\n";
+  }
+  for (std::size_t k = 0; k < controls.size(); ++k) {
+    s << "set title '" << controls[k] << "' noenhanced\n";
+    s << "plot $map" << k << " using 1:2:3 with image notitle, $map" << k
+      << " using 1:2:(sprintf('%d/%d', $4, $5)) with labels notitle\n";
+  }
+  s << "unset multiplot\n";
+  return s.str();
+}
+
+}  // namespace
+
+void write_push_map(const std::string& out_dir, bool png) {
+  const std::vector<MapCell> cells = push_map_cells(read_runs_csv(out_dir));
+  std::ostringstream csv;
+  csv << "control,dir,N,phase,walks,lost\n";
+  std::vector<std::string> directions, controls;
+  for (const MapCell& c : cells) {
+    csv << c.control << "," << c.direction << "," << c.push << "," << c.phase << "," << c.walks
+        << "," << c.lost << "\n";
+    if (std::find(directions.begin(), directions.end(), c.direction) == directions.end())
+      directions.push_back(c.direction);
+    if (std::find(controls.begin(), controls.end(), c.control) == controls.end())
+      controls.push_back(c.control);
+  }
+  write_file((fs::path(out_dir) / "push_map.csv").string(), csv.str());
+  if (!png || plot::png_terminal().empty()) return;
+  for (const std::string& d : directions) {
+    const std::string stem = (fs::path(out_dir) / ("push_map_" + d)).string();
+    plot::run_gnuplot(stem + ".gp", map_script(cells, d, stem + ".png", controls), stem + ".png");
+  }
+}
+
+}  // namespace stride::experiments
