@@ -31,7 +31,7 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.quiet = a.flag("--quiet");
     const std::string name = a.positional(
         "experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
-        "push-recovery");
+        "push-recovery|landing-control");
     if (a.has("--seeds")) {
       const std::uint64_t n = a.unsigned_integer("--seeds");
       if (n < 1 || n > 1000) throw UsageError("stride experiment: --seeds: expected 1..1000");

@@ -84,9 +84,10 @@ const std::vector<Subcommand>& subcommands() {
        tune_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
-       "push-recovery [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--sweeps dir] [--resume] "
-       "[--quiet] [--no-plots] [--set Module.field=value ...] [--physics a=v,b=w] [--cases a,b] "
-       "[--only column=a,b ...]: the experiments, the sweep files "
+       "push-recovery|landing-control [--seeds N] [--jobs N] [--out dir] [--scenes dir] "
+       "[--sweeps dir] [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] "
+       "[--physics a=v,b=w] [--cases a,b] [--only column=a,b ...]: the experiments, the sweep "
+       "files "
        "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
        "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "
        "hip or none_fast; --only: runs with these levels, e.g. seed=1,2)",

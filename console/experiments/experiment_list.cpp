@@ -7,6 +7,7 @@
 
 #include "console/experiments/fastest_search.hpp"
 #include "console/experiments/kalman_experiment.hpp"
+#include "console/experiments/landing_figures.hpp"
 #include "console/experiments/posture_figures.hpp"
 #include "console/experiments/push_figures.hpp"
 #include "console/sweep/sweep_request.hpp"
@@ -17,8 +18,9 @@
 namespace stride::experiments {
 namespace {
 
-constexpr std::array kSweeps = {"posture", "knee-energy", "fastest",       "arm-swing",
-                                "gains",   "push",        "position-push", "push-recovery"};
+constexpr std::array kSweeps = {"posture",       "knee-energy",   "fastest",
+                                "arm-swing",     "gains",         "push",
+                                "position-push", "push-recovery", "landing-control"};
 
 }  // namespace
 
@@ -80,6 +82,7 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   if (name == "posture" && !o.out_dir.empty()) write_posture_figures(o.out_dir, *result, o.plots);
   if (name == "position-push" && !o.out_dir.empty()) write_phase_portraits(o.out_dir, o.plots);
   if (name == "push-recovery" && !o.out_dir.empty()) write_push_map(o.out_dir, o.plots);
+  if (name == "landing-control" && !o.out_dir.empty()) write_landing_figure(o.out_dir, o.plots);
   if (result->failed == 0) return 0;
   err << "stride experiment " << name << ": " << result->failed
       << " walk(s) failed (listed with their reasons above)\n";

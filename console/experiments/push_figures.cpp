@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/plot/run_figures.hpp"
-#include "console/sweep/csv_line.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
 #include "robot/core/output_file.hpp"
@@ -19,43 +17,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot be read");
-  std::vector<std::vector<std::string>> lines;
-  for (std::string line; std::getline(in, line);) {
-    auto cells = sweep::parse_csv_line(line);
-    if (!cells)
-      throw Error(path + ":" + std::to_string(lines.size() + 1) + ": a quoted field not closed");
-    lines.push_back(std::move(*cells));
-  }
-  if (lines.empty()) throw Error(path + ": empty (expected a header line)");
-  return lines;
-}
-
-double number_at(const RunsCsv& runs, const std::vector<std::string>& row,
-                 const std::string& name) {
-  return parse_number(row.at(runs.column(name)), runs.path + ": column " + name);
-}
-
 // The impulses drawn in a phase portrait: recovered and fallen pushes both ways, few enough to
 // tell the curves apart.
 constexpr double kPortraitImpulses[] = {-3, -2, -1, 1, 2, 3};
 
 // One traced run: its (x, capture point) pairs.
 std::vector<std::pair<double, double>> trace_points(const std::string& path) {
-  const auto lines = read_csv(path);
-  const std::vector<std::string>& header = lines.front();
-  std::vector<std::size_t> cols;
-  for (const char* c : {"x", "capture_point"}) {
-    const auto it = std::find(header.begin(), header.end(), c);
-    if (it == header.end()) throw Error(path + ": no column '" + c + "'");
-    cols.push_back(static_cast<std::size_t>(it - header.begin()));
-  }
   std::vector<std::pair<double, double>> points;
-  for (std::size_t i = 1; i < lines.size(); ++i)
-    points.emplace_back(parse_number(lines[i].at(cols[0]), path + ": x"),
-                        parse_number(lines[i].at(cols[1]), path + ": capture_point"));
+  for (const auto& row : read_trace(path, {"x", "capture_point"}))
+    points.emplace_back(row[0], row[1]);
   return points;
 }
 
@@ -68,7 +38,7 @@ std::vector<plot::Reference> boundaries(const RunsCsv& runs, const std::vector<s
        {std::pair{"ankle", "ankle (Eq. 7.13)"}, std::pair{"hip", "hip (Eq. 7.30)"},
         std::pair{"combined", "combined (Eq. 7.37)"}}) {
     for (const char* end : {"lo", "hi"})
-      refs.push_back({number_at(runs, row, std::string(key) + "_" + end),
+      refs.push_back({runs.number(row, std::string(key) + "_" + end),
                       std::string(label) + (end[0] == 'l' ? " back" : " front"), false,
                       colour < 8 ? colour : -1});
     ++colour;
@@ -77,29 +47,11 @@ std::vector<plot::Reference> boundaries(const RunsCsv& runs, const std::vector<s
 }
 
 std::string outcome(const RunsCsv& runs, const std::vector<std::string>& row) {
-  if (number_at(runs, row, "recovered") != 0) return "recovered";
-  return number_at(runs, row, "fell") != 0 ? "fell" : "feet moved";
+  if (runs.number(row, "recovered") != 0) return "recovered";
+  return runs.number(row, "fell") != 0 ? "fell" : "feet moved";
 }
 
 }  // namespace
-
-std::size_t RunsCsv::column(const std::string& name) const {
-  const auto it = std::find(header.begin(), header.end(), name);
-  if (it == header.end()) throw Error(path + ": no column '" + name + "'");
-  return static_cast<std::size_t>(it - header.begin());
-}
-
-RunsCsv read_runs_csv(const std::string& out_dir) {
-  RunsCsv runs;
-  runs.path = (fs::path(out_dir) / "runs.csv").string();
-  auto lines = read_csv(runs.path);
-  runs.header = std::move(lines.front());
-  const std::size_t status = runs.column("status");
-  for (std::size_t i = 1; i < lines.size(); ++i)
-    if (lines[i].size() == runs.header.size() && lines[i][status] == "ok")
-      runs.rows.push_back(std::move(lines[i]));
-  return runs;
-}
 
 namespace {
 
@@ -151,9 +103,8 @@ void write_phase_portraits(const std::string& out_dir, bool png) {
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> traces;
   std::map<std::string, std::vector<plot::Reference>> refs;
   for (const auto& row : runs.rows) {
-    const fs::path trace =
-        fs::path(out_dir) / "traces" / ("run-" + row[runs.column("run")] + ".csv");
-    const double impulse = number_at(runs, row, "impulse");
+    const fs::path trace = trace_path(out_dir, runs, row);
+    const double impulse = runs.number(row, "impulse");
     if (!fs::exists(trace) || std::find(std::begin(kPortraitImpulses), std::end(kPortraitImpulses),
                                         impulse) == std::end(kPortraitImpulses))
       continue;
@@ -170,8 +121,8 @@ void write_phase_portraits(const std::string& out_dir, bool png) {
 std::vector<MapCell> push_map_cells(const RunsCsv& runs) {
   std::vector<MapCell> cells;
   for (const auto& row : runs.rows) {
-    MapCell key{row[runs.column("control")], row[runs.column("dir")], number_at(runs, row, "N"),
-                number_at(runs, row, "phase")};
+    MapCell key{row[runs.column("control")], row[runs.column("dir")], runs.number(row, "N"),
+                runs.number(row, "phase")};
     if (key.direction == "none") continue;
     auto it = std::find_if(cells.begin(), cells.end(), [&](const MapCell& c) {
       return c.control == key.control && c.direction == key.direction && c.push == key.push &&
@@ -179,7 +130,7 @@ std::vector<MapCell> push_map_cells(const RunsCsv& runs) {
     });
     if (it == cells.end()) it = cells.insert(cells.end(), key);
     ++it->walks;
-    it->lost += number_at(runs, row, "lost") != 0 ? 1 : 0;
+    it->lost += runs.number(row, "lost") != 0 ? 1 : 0;
   }
   return cells;
 }

@@ -10,17 +10,9 @@
 #include <string>
 #include <vector>
 
-namespace stride::experiments {
+#include "console/experiments/study_output.hpp"
 
-// runs.csv of a sweep's output: the header and the rows that ran (status ok).
-struct RunsCsv {
-  std::string path;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  // The column's index; throws stride::Error naming the file and the column.
-  std::size_t column(const std::string& name) const;
-};
-RunsCsv read_runs_csv(const std::string& out_dir);
+namespace stride::experiments {
 
 // One cell of the push map: walks lost of the walks made.
 struct MapCell {

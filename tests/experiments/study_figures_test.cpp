@@ -1,11 +1,13 @@
-// The issue-31 push figures from a sweep's output: the push map's cells counted from runs.csv
-// (failed and unpushed walks left out) and the phase portrait's curves in the capture-point form.
+// The issue-31 figures from a sweep's output: the push map's cells counted from runs.csv (failed
+// and unpushed walks left out), the phase portrait's curves in the capture-point form, and the
+// landing study's FSR window.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "console/experiments/landing_figures.hpp"
 #include "console/experiments/push_figures.hpp"
 #include "robot/core/error.hpp"
 #include "tests/error_text.hpp"
@@ -41,7 +43,7 @@ constexpr const char* kRecoveryRuns =
     "4,w.xml,posture,fwd10,10,forward,0.25,2,failed,,,,,\"ODE: bad\"\n"
     "5,w.xml,recovery,left20,20,left,0.5,1,ok,1,right,0.1,1,\n";
 
-TEST(PushFigures, TheMapCountsWalksLostPerPushPhaseAndControl) {
+TEST(StudyFigures, TheMapCountsWalksLostPerPushPhaseAndControl) {
   const fs::path d = fresh_dir("map");
   write(d / "runs.csv", kRecoveryRuns);
   const RunsCsv runs = read_runs_csv(d.string());
@@ -69,7 +71,7 @@ TEST(PushFigures, TheMapCountsWalksLostPerPushPhaseAndControl) {
   fs::remove_all(d);
 }
 
-TEST(PushFigures, AMissingColumnIsNamedWithTheFile) {
+TEST(StudyFigures, AMissingColumnIsNamedWithTheFile) {
   const fs::path d = fresh_dir("missing");
   write(d / "runs.csv", "run,control,N,dir,status,lost\n0,posture,10,forward,ok,0\n");
   const std::string e = test_support::error_of([&] { write_push_map(d.string(), false); });
@@ -77,7 +79,7 @@ TEST(PushFigures, AMissingColumnIsNamedWithTheFile) {
   fs::remove_all(d);
 }
 
-TEST(PushFigures, ThePortraitTakesSeedOnesTracesOfTheChosenImpulses) {
+TEST(StudyFigures, ThePortraitTakesSeedOnesTracesOfTheChosenImpulses) {
   const fs::path d = fresh_dir("portrait");
   const std::string bounds = "6,-0.06,0.1,-0.02,0.03,-0.08,0.13";
   write(d / "runs.csv",
@@ -99,6 +101,23 @@ TEST(PushFigures, ThePortraitTakesSeedOnesTracesOfTheChosenImpulses) {
   // Runs -3 (two frames) and 2 (one) side by side as (x, capture point), NaN-padded.
   EXPECT_EQ(read(d / "phase_position.csv"),
             "x_1,cp_1,x_2,cp_2\n0.01,0.06,0.02,0.0033\n0.012,0.045,NaN,NaN\n");
+  fs::remove_all(d);
+}
+
+TEST(StudyFigures, TheLandingFigureKeepsOneSecondOfEachTracedWalk) {
+  const fs::path d = fresh_dir("landing");
+  write(d / "runs.csv",
+        "run,scene,landing,floor_mm,speed,seed,status,impulse\n"
+        "0,l.xml,off,3,medium,1,ok,1.6\n1,l.xml,on,3,medium,1,ok,1.5\n"
+        "2,l.xml,on,3,fast,1,ok,1.5\n");  // not traced
+  // 0.4 s frames from 6 s: 6, 6.4, 6.8 lie within the second, 7.2 not.
+  for (const char* run : {"0", "1"})
+    write(d / "traces" / ("run-" + std::string(run) + ".csv"),
+          "t,fsr_left,fsr_right\n6,0,25\n6.4,25,0\n6.8,48.5,0\n7.2,0,30\n");
+  write_landing_figure(d.string(), false);
+  EXPECT_EQ(read(d / "fsr_touchdown_runs.csv"),
+            "case,t,fsr_left,fsr_right\n1,6,0,25\n1,6.4,25,0\n1,6.8,48.5,0\n"
+            "2,6,0,25\n2,6.4,25,0\n2,6.8,48.5,0\n");
   fs::remove_all(d);
 }
 
