@@ -48,6 +48,24 @@ inline pid_t start_process(const std::vector<std::string>& args, const std::file
   return pid;
 }
 
+// `mpirun -n <ranks> <args>`, as root if need be and on fewer cores than ranks. OpenMPI's runtime
+// allocations live until exit (.ci/lsan.supp names its libraries); full unwinding and loaded
+// components let the sanitized build's leak checker see those frames.
+inline std::vector<std::string> under_mpirun(int ranks, const std::vector<std::string>& args) {
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  std::vector<std::string> all = {
+      "/usr/bin/env",
+      "ASAN_OPTIONS=" + std::string(asan ? asan : "") + ":fast_unwind_on_malloc=0",
+      "OMPI_MCA_mca_base_component_disable_dlclose=1",
+      "mpirun",
+      "--allow-run-as-root",
+      "--oversubscribe",
+      "-n",
+      std::to_string(ranks)};
+  all.insert(all.end(), args.begin(), args.end());
+  return all;
+}
+
 // Its exit code, or 128 + the signal that ended it.
 inline int finish_process(pid_t pid) {
   int status = 0;

@@ -161,16 +161,9 @@ TEST_F(SweepProcess, CtrlCLeavesAResumableOutput) {
 TEST_F(SweepProcess, MpirunThreeRanksGivesTheSameRows) {
   if (::system("command -v mpirun > /dev/null") != 0) GTEST_SKIP() << "no mpirun";
   const fs::path dir = fresh("mpi");
-  // OpenMPI's runtime allocations live until exit (.ci/lsan.supp names its libraries); full
-  // unwinding and loaded components let the leak checker see those frames.
-  const char* asan = std::getenv("ASAN_OPTIONS");
-  const std::string asan_options =
-      "ASAN_OPTIONS=" + std::string(asan ? asan : "") + ":fast_unwind_on_malloc=0";
-  const int code =
-      run({"/usr/bin/env", asan_options, "OMPI_MCA_mca_base_component_disable_dlclose=1", "mpirun",
-           "--allow-run-as-root", "--oversubscribe", "-n", "3", kStride, "sweep", kSweep, "--quiet",
-           "--out", dir},
-          dir);
+  const int code = run(
+      stride::test_support::under_mpirun(3, {kStride, "sweep", kSweep, "--quiet", "--out", dir}),
+      dir);
   const std::string err = read(dir.string() + ".err");
   if (err.find("built without MPI") != std::string::npos) GTEST_SKIP() << err;
   ASSERT_EQ(code, 0) << err;

@@ -2,8 +2,9 @@
 // parameters read back: shoulder_pitch 1.2, elbow_yaw 0.3): bad files are one file:line line and
 // run nothing; an unwritable or occupied output is refused before any walk; the same file gives
 // the same rows byte for byte at --jobs 1 and 2; a search killed with -9 and resumed gives the
-// uninterrupted search's rows; the held-out sweep walks only the held-out seeds; the optimiser
-// finds the optimum; the tuning-file fuzz target's corpus and mutations (tests/fuzz_tune).
+// uninterrupted search's rows; `mpirun -n 2` gives the --jobs 1 rows and best candidate; the
+// held-out sweep walks only the held-out seeds; the optimiser finds the optimum; the tuning-file
+// fuzz target's corpus and mutations (tests/fuzz_tune).
 #include <signal.h>
 
 #include <chrono>
@@ -234,6 +235,34 @@ TEST_F(TuneSearch, HeldOutWalksAreTheHeldOutSeedsOnly) {
   EXPECT_EQ(one_.heldout_thesis.walks, 3);
   // The same walk on every seed here: the tuned values' objective (a mean of 3, not 2, walks).
   EXPECT_NEAR(one_.heldout_tuned.objective, one_.best.score.objective, 1e-15);
+}
+
+// The workers (timing.csv's last column) that walked any of a search's batches.
+std::set<std::string> workers(const fs::path& out) {
+  std::set<std::string> all;
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    if (e.path().filename() == "timing.csv")
+      for (const std::string& w : column(e.path(), "worker")) all.insert(w);
+  return all;
+}
+
+TEST_F(TuneSearch, MpirunTwoRanksGivesTheSameRowsAndTheSameBest) {
+  if (::system("command -v mpirun > /dev/null") != 0) GTEST_SKIP() << "no mpirun";
+  const fs::path out = dir_ / "mpi";
+  const int code = run_binary(
+      test_support::under_mpirun(
+          2, {kStride, "tune", file_.string(), "--quiet", "--no-plots", "--out", out.string()}),
+      dir_ / "mpi.log");
+  const std::string log = read(dir_ / "mpi.log");
+  if (log.find("built without MPI") != std::string::npos) GTEST_SKIP() << log;
+  ASSERT_EQ(code, 0) << log;
+  EXPECT_EQ(rows(out), rows(dir_ / "jobs1"));
+  EXPECT_EQ(read(out / "results.txt"), read(dir_ / "jobs1" / "results.txt"));
+  // The best candidate as results.txt names it, the one the in-process search chose.
+  std::ostringstream best;
+  best << "(generation " << one_.best.generation << ", candidate " << one_.best.label << ")";
+  EXPECT_NE(read(out / "results.txt").find(best.str()), std::string::npos) << best.str();
+  EXPECT_EQ(workers(out), (std::set<std::string>{"0", "1"})) << "both ranks walked";
 }
 
 TEST(TuneProcess, KillNineThenResumeGivesTheUninterruptedRows) {
