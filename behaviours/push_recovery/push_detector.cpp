@@ -38,6 +38,19 @@ PushResponse classify_deviation(const balance::BalanceParams& p, const balance::
   return PushResponse::step;
 }
 
+Eigen::Vector2d ankle_response(const Eigen::Vector2d& capture_deviation,
+                               const Eigen::Vector2d& dead_band, const Eigen::Vector2d& gain,
+                               double max_angle) {
+  Eigen::Vector2d out;
+  for (int i = 0; i < 2; ++i) {
+    const double xi = capture_deviation[i];
+    const double beyond = std::copysign(std::max(0.0, std::abs(xi) - dead_band[i]), xi);
+    out[i] = std::clamp(gain[i] * beyond, -max_angle, max_angle);
+  }
+  out[1] = -out[1];  // a positive roll lifts the sole's +y edge
+  return out;
+}
+
 Eigen::Vector2d capture_step(const Eigen::Vector2d& capture_deviation, double gain,
                              const StepLimits& limits, bool left_swings) {
   const Eigen::Vector2d want = gain * capture_deviation;

@@ -43,6 +43,14 @@ balance::BalanceParams deviation_model(balance::BalanceParams robot, double sole
 PushResponse classify_deviation(const balance::BalanceParams& p, const balance::ComState& deviation,
                                 double threshold, bool hip);
 
+// The stance ankle's response through positions: per axis the capture-point deviation beyond its
+// dead band (the walk's own deviation) times the gain, clamped to +-max_angle; pitch leans on the
+// toes for a deviation forward, roll on the sole's +y edge for one to the left (the CoP moved
+// toward the capture point, the ankle strategy of Sec. 7.3). Returns (pitch, roll) offsets, rad.
+Eigen::Vector2d ankle_response(const Eigen::Vector2d& capture_deviation,
+                               const Eigen::Vector2d& dead_band, const Eigen::Vector2d& gain,
+                               double max_angle);
+
 // How far a landing may move from the plan: forward/backward, and sideways away from the stance
 // foot (outward) or towards it (inward).
 struct StepLimits {

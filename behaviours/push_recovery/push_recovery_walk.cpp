@@ -28,11 +28,6 @@ std::pair<double, double> sole_y_extent(bool left) {
   return {c - nao::kSoleWidth / 2, c + nao::kSoleWidth / 2};
 }
 
-// Beyond the walk's own deviation, the ankle offset grows with the capture point's.
-double beyond(double xi, double threshold) {
-  return std::copysign(std::max(0.0, std::abs(xi) - threshold), xi);
-}
-
 class PushRecoveryWalk final : public Module {
  public:
   explicit PushRecoveryWalk(ModuleContext& c)
@@ -113,11 +108,8 @@ class PushRecoveryWalk final : public Module {
         state_.sagittal != PushResponse::none || state_.lateral != PushResponse::none;
     if (pushed && state_.first_detection < 0) state_.first_detection = frame_.time;
     if (!pushed) step_armed_ = true;  // back within the walk's own deviation: the next push
-    state_.ankle_offset = {
-        std::clamp(r.ankle_pitch_gain * beyond(xi.x(), r.ankle_threshold), -r.max_ankle,
-                   r.max_ankle),
-        std::clamp(-r.ankle_roll_gain * beyond(xi.y(), r.ankle_lateral_threshold), -r.max_ankle,
-                   r.max_ankle)};
+    state_.ankle_offset = ankle_response(xi, {r.ankle_threshold, r.ankle_lateral_threshold},
+                                         {r.ankle_pitch_gain, r.ankle_roll_gain}, r.max_ankle);
     start_hat_excursion(px, {dev.x(), rate.x()});
     if (state_.sagittal == PushResponse::step || state_.lateral == PushResponse::step)
       step(t, {state_.sagittal == PushResponse::step ? xi.x() : 0.0,

@@ -62,9 +62,10 @@ struct PushRecoveryParameters {
   double lateral_threshold = 0.08;
   bool hip = true;  // sagittal hip and combined responses allowed
   // m of capture-point deviation beyond which the stance ankle acts (per axis); the thresholds
-  // above gate the hip, combined and step responses only. At the thresholds (the first
-  // measurement) the ankle stays idle until a push is classified.
-  double ankle_threshold = 0.07, ankle_lateral_threshold = 0.08;
+  // above gate the hip, combined and step responses only. Sagittally the ankle acts from 2 cm,
+  // before a push is classified (at 7 cm, the first measurement, it came too late: README);
+  // sideways from the lateral threshold (acting on the walk's own +-5 cm sway lost more walks).
+  double ankle_threshold = 0.02, ankle_lateral_threshold = 0.08;
   double ankle_pitch_gain = 1.5;  // rad per m of capture-point deviation beyond the threshold
   double ankle_roll_gain = 1.5;
   double max_ankle = 0.12;  // rad

@@ -61,6 +61,23 @@ TEST(PushDetector, TheCaptureStepIsClampedOutwardMoreThanInward) {
   EXPECT_EQ(capture_step({0.02, 0.0}, 1.5, lim, false), Eigen::Vector2d(0.03, 0.0));
 }
 
+TEST(PushDetector, TheAnkleActsOnTheCapturePointBeyondItsDeadBand) {
+  // Pitch: (0.05 - 0.02) * 1.5 = 0.045 rad, toes down; roll: (0.10 - 0.08) * 1.5 = 0.03 rad on
+  // the +y edge, a negative roll.
+  const Eigen::Vector2d a = ankle_response({0.05, 0.10}, {0.02, 0.08}, {1.5, 1.5}, 0.12);
+  EXPECT_NEAR(a.x(), 0.045, 1e-15);
+  EXPECT_NEAR(a.y(), -0.03, 1e-15);
+  // Within the dead band nothing; backward and to the right the signs turn.
+  EXPECT_EQ(ankle_response({0.019, -0.079}, {0.02, 0.08}, {1.5, 1.5}, 0.12),
+            Eigen::Vector2d(0.0, 0.0));
+  const Eigen::Vector2d b = ankle_response({-0.06, -0.11}, {0.02, 0.08}, {1.5, 2.0}, 0.12);
+  EXPECT_NEAR(b.x(), -0.06, 1e-15);
+  EXPECT_NEAR(b.y(), 0.06, 1e-15);
+  // Clamped to the largest offset.
+  EXPECT_EQ(ankle_response({0.3, -0.3}, {0.02, 0.08}, {1.5, 1.5}, 0.12),
+            Eigen::Vector2d(0.12, 0.12));
+}
+
 TEST(AdjustedPattern, TheMovedSwingFootLandsAtTheClampedCapturePoint) {
   walking::AdjustedPattern pattern(walking::preset("medium"));
   const walking::Footsteps& f = pattern.base().footsteps();
