@@ -137,10 +137,23 @@ std::vector<MapCell> push_map_cells(const RunsCsv& runs) {
 
 namespace {
 
-// One heat map per control side by side: x the gait phase, y the push, colour the share of walks
-// lost, each cell labelled lost/walks. The data go into the script, so the .gp redraws alone.
+// The smallest gap between the distinct values (1 for a single value): the width of a map cell.
+double spacing(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  double gap = v.size() > 1 ? v[1] - v[0] : 1.0;
+  for (std::size_t i = 2; i < v.size(); ++i) gap = std::min(gap, v[i] - v[i - 1]);
+  return gap;
+}
+
+// One map per control side by side: x the gait phase, y the push, each cell a box coloured by
+// the share of walks lost and labelled lost/walks (boxes, not an image: a cell run at one phase
+// only leaves the grid irregular). The data go into the script, so the .gp redraws alone.
 std::string map_script(const std::vector<MapCell>& cells, const std::string& direction,
                        const std::string& png, const std::vector<std::string>& controls) {
+  std::vector<double> phases, pushes;
+  for (const MapCell& c : cells) phases.push_back(c.phase), pushes.push_back(c.push);
+  const double hx = spacing(phases) / 2, hy = spacing(pushes) / 2;
   std::ostringstream s;
   s << "set terminal " << plot::png_terminal() << " size 1200,520\n";
   s << "set output '" << png << "'\n";
@@ -149,19 +162,23 @@ std::string map_script(const std::vector<MapCell>& cells, const std::string& dir
   s << "set xlabel 'push start [fraction of the stride after 6 s]'\n";
   s << "set ylabel 'push [N for 0.1 s]'\nset cblabel 'walks lost [fraction of the seeds]'\n";
   s << "set cbrange [0:1]\nset palette defined (0 'white', 0.5 'orange', 1 'red')\n";
-  s << "set xrange [-0.125:0.875]\nset yrange [5:65]\nset xtics 0.25\nset ytics 10\n";
+  s << "set xrange [" << *std::min_element(phases.begin(), phases.end()) - hx << ":"
+    << *std::max_element(phases.begin(), phases.end()) + hx << "]\n";
+  s << "set yrange [" << *std::min_element(pushes.begin(), pushes.end()) - hy << ":"
+    << *std::max_element(pushes.begin(), pushes.end()) + hy << "]\n";
+  s << "set xtics " << 2 * hx << "\nset ytics " << 2 * hy << "\n";
   for (std::size_t k = 0; k < controls.size(); ++k) {
-    const std::string& control = controls[k];
     s << "$map" << k << " << EOD\n";
     for (const MapCell& c : cells)
-      if (c.control == control && c.direction == direction)
+      if (c.control == controls[k] && c.direction == direction)
         s << c.phase << " " << c.push << " " << static_cast<double>(c.lost) / c.walks << " "
           << c.lost << " " << c.walks << "\n";
     s << "EOD\n";
   }
   for (std::size_t k = 0; k < controls.size(); ++k) {
     s << "set title '" << controls[k] << "' noenhanced\n";
-    s << "plot $map" << k << " using 1:2:3 with image notitle, $map" << k
+    s << "plot $map" << k << " using 1:2:($1-" << hx << "):($1+" << hx << "):($2-" << hy << "):($2+"
+      << hy << "):3 with boxxyerror fs solid 1.0 border lc rgb 'gray' fc palette notitle, $map" << k
       << " using 1:2:(sprintf('%d/%d', $4, $5)) with labels notitle\n";
   }
   s << "unset multiplot\n";
