@@ -100,8 +100,10 @@ std::string experiment_names() {
 std::string experiment_sweep_file(const std::string& name, const std::string& sweeps_dir) {
   if (name == "kalman") return "";
   if (std::find(kSweeps.begin(), kSweeps.end(), name) == kSweeps.end())
-    throw UsageError("stride experiment: unknown experiment " + quote(name) + " (expected one of " +
-                     experiment_names() + ")");
+    // A pasted screenful is quoted short; the list of names then stays out of the one line too.
+    throw UsageError("stride experiment: unknown experiment " + quote(name) +
+                     (name.size() > 40 ? " (`stride experiment --help` lists them)"
+                                       : " (expected one of " + experiment_names() + ")"));
   const std::filesystem::path p =
       std::filesystem::path(find_input(sweeps_dir)) / (name + ".sweep.xml");
   if (!std::filesystem::exists(p))
