@@ -1,16 +1,19 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
-//   debug_load [--seconds S] [--clients N] [--fields F] [--scene f] [--judge all|streams]
-//              [--rt-priority 1..99] [--cpu K]
+//   debug_load [--seconds S] [--block B] [--clients N] [--fields F] [--scene f]
+//              [--judge all|streams] [--rt-priority 1..99] [--cpu K]
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
-// to the wall clock, its controller served by a debug server. Three phases of S seconds: no
-// client, then N clients each streaming F fields every frame while one more floods garbage and
-// another connects and drops in a loop (each its own debug_peer process), then no client again.
-// Prints per phase the frames, the missed frames (a frame whose control step started a whole
-// period late) and the control step's compute time (modules + the debug exchange) p50/p99/max,
-// and every client's account of its stream. Exit 1 if a criterion fails: an honest stream not
-// complete (every frame received or counted as dropped), or with --judge all a missed frame or
-// a loaded p99 more than 10 % over the quiet one. --rt-priority runs the loop under SCHED_FIFO,
-// as `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal);
+// to the wall clock, its controller served by a debug server. Quiet blocks (no client) alternate
+// with loaded blocks (N clients each streaming F fields every frame while one more floods garbage
+// and another connects and drops in a loop, each its own debug_peer process): quiet, loaded,
+// quiet, ..., quiet, S seconds loaded in all, in blocks of B seconds (default B = S: one loaded
+// block between two quiet ones). Alternating short blocks lets both conditions see the same
+// drift of the machine and the same mix of the walk. Prints per condition the frames, the missed
+// frames (a frame whose control step started a whole period late), the control step's compute
+// time (modules + the debug exchange) and the frame boundary's own time p50/p99/max, and the
+// clients' account of their streams. Exit 1 if a criterion fails: an honest stream not complete
+// (every frame received or counted as dropped), or with --judge all a missed frame or a loaded
+// p99 more than 10 % over the quiet one. --rt-priority runs the loop under SCHED_FIFO, as
+// `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal);
 // --cpu gives the loop CPU K alone (the server thread and the peers run on the others), so the
 // network work of the flood, done where its sockets live, stays off the loop's CPU.
 #include <fcntl.h>
@@ -20,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -32,6 +36,7 @@
 #include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 #include "simulator/scene/scene_parser.hpp"
+#include "timed_boundary.hpp"
 
 extern char** environ;
 
@@ -40,9 +45,11 @@ namespace {
 using namespace stride;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+constexpr double kPeriod = 0.012;  // s, the NAO's LoLA cycle as a 12 ms control frame
 
 struct Options {
   double seconds = 10;
+  double block = 0;  // 0: one block of `seconds`
   int clients = 8;
   int fields = 50;
   std::string scene = STRIDE_SOURCE_DIR "/scenes/experiments/hip_medium.xml";
@@ -57,6 +64,8 @@ Options read_options(int argc, char** argv) {
     const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--seconds")
       o.seconds = std::stod(value);
+    else if (flag == "--block")
+      o.block = std::stod(value);
     else if (flag == "--clients")
       o.clients = std::stoi(value);
     else if (flag == "--fields")
@@ -73,6 +82,9 @@ Options read_options(int argc, char** argv) {
       throw Error("debug_load: unknown flag '" + flag + "'");
   }
   if (argc % 2 == 0) throw Error("debug_load: every flag takes a value");
+  if (!(o.seconds > 0) || o.block < 0 || o.block > o.seconds)
+    throw Error("debug_load: expected 0 < --block <= --seconds");
+  if (o.block == 0) o.block = o.seconds;
   return o;
 }
 
@@ -126,32 +138,37 @@ std::string finish_peer(const Peer& p) {
   return line + (WIFEXITED(status) && WEXITSTATUS(status) == 0 ? "" : " (exit status nonzero)");
 }
 
-struct Phase {
+std::vector<double> percentiles(std::vector<double> v, std::initializer_list<double> ps) {
+  std::vector<double> out;
+  if (v.empty()) return std::vector<double>(ps.size(), 0.0);
+  std::sort(v.begin(), v.end());
+  for (double p : ps)
+    out.push_back(v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1)))]);
+  return out;
+}
+
+// One condition's frames, pooled over its blocks.
+struct Condition {
   std::string name;
-  std::vector<double> compute_us;
-  std::int64_t frames = 0, missed = 0;
-  double percentile(double p) const {
-    if (compute_us.empty()) return 0;
-    std::vector<double> v = compute_us;
-    const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1)));
-    std::nth_element(v.begin(), v.begin() + k, v.end());
-    return v[k];
-  }
+  std::vector<double> compute_us, boundary_us;
+  std::int64_t frames = 0, missed = 0, blocks = 0;
+  double p99() const { return percentiles(compute_us, {0.99})[0]; }
 };
 
-// Runs the walking robot in real time for `seconds`, timing each control step.
-void run_phase(sim::Simulation& sim, Runtime& rt, double period, double seconds, Phase& phase) {
+// Runs the walking robot in real time for `seconds`, timing each control step and its boundary.
+void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
+               double period, double seconds, Condition& c) {
   const double start = sim.time();
   const auto wall_start = Clock::now();
   sim.set_controller(0, [&](sim::SimulatedRobot&) {
     const auto now = Clock::now();
     const double due = sim.time() - start;
     const double late = std::chrono::duration<double>(now - wall_start).count() - due;
-    if (late > period) ++phase.missed;
+    if (late > period) ++c.missed;
     rt.step();
-    phase.compute_us.push_back(
-        std::chrono::duration<double, std::micro>(Clock::now() - now).count());
-    ++phase.frames;
+    c.compute_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - now).count());
+    c.boundary_us.push_back(static_cast<double>(boundary.last_ns.load()) * 1e-3);
+    ++c.frames;
   });
   while (sim.time() - start < seconds - 1e-9) {
     sim.step();
@@ -159,6 +176,106 @@ void run_phase(sim::Simulation& sim, Runtime& rt, double period, double seconds,
                                   std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(sim.time() - start)));
   }
+  ++c.blocks;
+}
+
+// The integer after "key=" in a peer's result line (0 when absent).
+std::uint64_t field_of(const std::string& line, const std::string& key) {
+  const auto at = line.find(key + "=");
+  return at == std::string::npos ? 0 : std::stoull(line.substr(at + key.size() + 1));
+}
+
+// The clients' accounts, summed over the loaded blocks.
+struct PeerTotals {
+  std::int64_t streams = 0, complete = 0;
+  std::uint64_t received = 0, dropped = 0, flood_bytes = 0, flood_connections = 0, churned = 0;
+  std::string first_failure;
+  void add(const std::string& line) {
+    if (line.starts_with("role=honest")) {
+      ++streams;
+      const bool ok =
+          line.find("complete=1") != std::string::npos && line.find("nonzero") == std::string::npos;
+      complete += ok;
+      if (!ok && first_failure.empty()) first_failure = line;
+      received += field_of(line, "received");
+      dropped += field_of(line, "dropped");
+    } else if (line.starts_with("role=garbage")) {
+      flood_bytes += field_of(line, "bytes");
+      flood_connections += field_of(line, "connections");
+    } else if (line.starts_with("role=churn")) {
+      churned += field_of(line, "greeted");
+    }
+  }
+};
+
+struct Peers {
+  std::string at;
+  std::vector<int> cpus, loop_cpu;
+  fs::path dir;
+};
+
+// One loaded block: the peers run `block` seconds, the loop one more so they end within it.
+void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
+                      const Options& o, const Peers& where, Condition& c, PeerTotals& totals) {
+  std::vector<Peer> peers;
+  const std::string peer_seconds = std::to_string(o.block);
+  for (int i = 0; i < o.clients; ++i)
+    peers.push_back(spawn_peer({"honest", where.at, peer_seconds, field_spec(o.fields), "1"},
+                               (where.dir / ("honest" + std::to_string(i))).string(), where.cpus,
+                               where.loop_cpu));
+  peers.push_back(spawn_peer({"garbage", where.at, peer_seconds}, (where.dir / "garbage").string(),
+                             where.cpus, where.loop_cpu));
+  peers.push_back(spawn_peer({"churn", where.at, peer_seconds}, (where.dir / "churn").string(),
+                             where.cpus, where.loop_cpu));
+  run_block(sim, rt, boundary, kPeriod, o.block + 1.0, c);
+  for (const auto& p : peers) totals.add(finish_peer(p));
+}
+
+void print_condition(const Condition& c) {
+  const auto step = percentiles(c.compute_us, {0.5, 0.99, 1.0});
+  const auto edge = percentiles(c.boundary_us, {0.5, 0.99, 1.0});
+  std::cout << "  " << c.name << " (" << c.blocks << " blocks): frames " << c.frames << ", missed "
+            << c.missed << ", control step us p50 " << step[0] << " p99 " << step[1] << " max "
+            << step[2] << "; frame boundary us p50 " << edge[0] << " p99 " << edge[1] << " max "
+            << edge[2] << "\n";
+}
+
+// Prints the figures; true when every criterion holds.
+bool report(const Options& o, const Condition& quiet, const Condition& loaded, const PeerTotals& t,
+            const debug::DebugServer& server, std::uint64_t log_lines) {
+  std::cout << "debug_load: " << o.clients << " clients x " << o.fields
+            << " fields every 12 ms frame, + garbage flood + connect/drop loop, " << o.seconds
+            << " s loaded in blocks of " << o.block << " s between quiet blocks, loop "
+            << (o.rt_priority > 0 ? "SCHED_FIFO " + std::to_string(o.rt_priority) : "time-shared")
+            << (o.cpu >= 0 ? " on CPU " + std::to_string(o.cpu) + " alone" : "") << "\n";
+  std::cout.setf(std::ios::fixed);
+  std::cout.precision(1);
+  print_condition(quiet);
+  print_condition(loaded);
+  const double ratio = loaded.p99() / quiet.p99();
+  std::cout.precision(3);
+  std::cout << "  loaded p99 / quiet p99 = " << ratio << " (limit 1.10)\n";
+  std::cout << "  honest streams: " << t.complete << " of " << t.streams << " complete, "
+            << t.received << " samples received, " << t.dropped << " dropped (counted)\n"
+            << "  garbage flood: " << t.flood_bytes << " bytes over " << t.flood_connections
+            << " connections; churn: " << t.churned << " connections greeted and dropped\n";
+  if (!t.first_failure.empty())
+    std::cout << "  first incomplete stream: " << t.first_failure << "\n";
+  const auto stats = server.stats();
+  std::cout << "  server: " << stats.accepted << " connections, " << stats.rejected << " rejected, "
+            << stats.samples_sent << " samples sent, " << stats.samples_dropped << " dropped, "
+            << stats.snapshots_lost << " frames missed by the server thread, " << log_lines
+            << " log lines\n";
+  const bool streams_ok = t.streams > 0 && t.complete == t.streams;
+  bool ok = streams_ok;
+  if (!streams_ok) std::cout << "FAIL: an honest stream is incomplete and not counted\n";
+  if (o.judge_timing) {
+    if (loaded.missed > 0) std::cout << "FAIL: missed frames under load\n";
+    if (ratio > 1.10) std::cout << "FAIL: loaded p99 more than 10 % over the quiet p99\n";
+    ok = ok && loaded.missed == 0 && ratio <= 1.10;
+  }
+  std::cout << (ok ? "PASS" : "FAIL") << std::endl;
+  return ok;
 }
 
 }  // namespace
@@ -167,8 +284,7 @@ int main(int argc, char** argv) {
   try {
     const Options o = read_options(argc, argv);
     sim::SceneDescription scene = sim::parse_scene_file(o.scene);
-    const double period = 0.012;
-    scene.robots.at(0).period = period;
+    scene.robots.at(0).period = kPeriod;
     console::SimSession session(std::move(scene));
     Runtime& rt = *session.runtime(0);
     debug::ServerOptions options;
@@ -177,83 +293,33 @@ int main(int argc, char** argv) {
     options.max_clients = static_cast<std::size_t>(o.clients) + 8;
     std::uint64_t log_lines = 0;
     options.log = [&](const std::string&) { ++log_lines; };  // counted, not printed
-    std::vector<int> loop_cpu, other_cpus;
+    Peers where;
     if (o.cpu >= 0) {
-      loop_cpu = {o.cpu};
-      other_cpus = cpus_except(o.cpu);
-      set_cpu_affinity(other_cpus, "debug_load: --cpu");  // the server thread inherits these
+      where.loop_cpu = {o.cpu};
+      where.cpus = cpus_except(o.cpu);
+      set_cpu_affinity(where.cpus, "debug_load: --cpu");  // the server thread inherits these
     }
     debug::DebugServer server(options);
-    if (o.cpu >= 0) set_cpu_affinity(loop_cpu, "debug_load: --cpu");
-    rt.set_frame_boundary(&server.boundary());
-    const std::string at = server.endpoint().text();
+    if (o.cpu >= 0) set_cpu_affinity(where.loop_cpu, "debug_load: --cpu");
+    test::TimedBoundary boundary(server.boundary());
+    rt.set_frame_boundary(&boundary);
+    where.at = server.endpoint().text();
     if (o.rt_priority > 0) set_realtime_priority(o.rt_priority, "debug_load: --rt-priority");
     auto& sim = session.simulation();
+    where.dir = fs::temp_directory_path() / ("debug_load_" + std::to_string(getpid()));
+    fs::create_directories(where.dir);
 
-    std::vector<Phase> phases{{"quiet"}, {"loaded"}, {"quiet again"}};
-    run_phase(sim, rt, period, o.seconds, phases[0]);
-
-    const fs::path dir = fs::temp_directory_path() / ("debug_load_" + std::to_string(getpid()));
-    fs::create_directories(dir);
-    std::vector<Peer> honest, others;
-    const std::string peer_seconds = std::to_string(o.seconds);
-    for (int i = 0; i < o.clients; ++i)
-      honest.push_back(spawn_peer({"honest", at, peer_seconds, field_spec(o.fields), "1"},
-                                  (dir / ("honest" + std::to_string(i))).string(), other_cpus,
-                                  loop_cpu));
-    others.push_back(spawn_peer({"garbage", at, peer_seconds}, (dir / "garbage").string(),
-                                other_cpus, loop_cpu));
-    others.push_back(
-        spawn_peer({"churn", at, peer_seconds}, (dir / "churn").string(), other_cpus, loop_cpu));
-    run_phase(sim, rt, period, o.seconds + 1.0, phases[1]);  // the peers end within it
-    bool streams_ok = true;
-    std::vector<std::string> results;
-    for (const auto& p : honest) {
-      results.push_back(finish_peer(p));
-      streams_ok &= results.back().find("complete=1") != std::string::npos &&
-                    results.back().find("nonzero") == std::string::npos;
+    Condition quiet{"quiet"}, loaded{"loaded"};
+    PeerTotals totals;
+    const int blocks = std::max(1, static_cast<int>(std::lround(o.seconds / o.block)));
+    run_block(sim, rt, boundary, kPeriod, o.block, quiet);
+    for (int i = 0; i < blocks; ++i) {
+      run_loaded_block(sim, rt, boundary, o, where, loaded, totals);
+      run_block(sim, rt, boundary, kPeriod, o.block, quiet);
     }
-    for (const auto& p : others) results.push_back(finish_peer(p));
-    run_phase(sim, rt, period, o.seconds, phases[2]);
     rt.set_frame_boundary(nullptr);
-    fs::remove_all(dir);
-
-    Phase quiet{"quiet (both)"};
-    for (int i : {0, 2}) {
-      quiet.compute_us.insert(quiet.compute_us.end(), phases[i].compute_us.begin(),
-                              phases[i].compute_us.end());
-      quiet.frames += phases[i].frames;
-      quiet.missed += phases[i].missed;
-    }
-    std::cout << "debug_load: " << o.clients << " clients x " << o.fields << " fields every "
-              << period * 1000 << " ms frame, + garbage flood + connect/drop loop, " << o.seconds
-              << " s per phase, loop "
-              << (o.rt_priority > 0 ? "SCHED_FIFO " + std::to_string(o.rt_priority) : "time-shared")
-              << (o.cpu >= 0 ? " on CPU " + std::to_string(o.cpu) + " alone" : "") << "\n";
-    std::cout.setf(std::ios::fixed);
-    std::cout.precision(1);
-    for (const Phase* p : {&phases[0], &phases[1], &phases[2], &quiet})
-      std::cout << "  " << p->name << ": frames " << p->frames << ", missed " << p->missed
-                << ", control step us p50 " << p->percentile(0.5) << " p99 " << p->percentile(0.99)
-                << " max " << p->percentile(1.0) << "\n";
-    const double ratio = phases[1].percentile(0.99) / quiet.percentile(0.99);
-    std::cout.precision(3);
-    std::cout << "  loaded p99 / quiet p99 = " << ratio << " (limit 1.10)\n";
-    for (const auto& r : results) std::cout << "  " << r << "\n";
-    const auto stats = server.stats();
-    std::cout << "  server: " << stats.accepted << " connections, " << stats.rejected
-              << " rejected, " << stats.samples_sent << " samples sent, " << stats.samples_dropped
-              << " dropped, " << stats.snapshots_lost << " frames missed by the server thread, "
-              << log_lines << " log lines\n";
-    bool ok = streams_ok;
-    if (!streams_ok) std::cout << "FAIL: an honest stream is incomplete and not counted\n";
-    if (o.judge_timing) {
-      if (phases[1].missed > 0) std::cout << "FAIL: missed frames under load\n";
-      if (ratio > 1.10) std::cout << "FAIL: loaded p99 more than 10 % over the quiet p99\n";
-      ok = ok && phases[1].missed == 0 && ratio <= 1.10;
-    }
-    std::cout << (ok ? "PASS" : "FAIL") << std::endl;
-    return ok ? 0 : 1;
+    fs::remove_all(where.dir);
+    return report(o, quiet, loaded, totals, server, log_lines) ? 0 : 1;
   } catch (const Error& e) {
     std::cerr << e.what() << "\n";
     return 2;

@@ -13,25 +13,9 @@
 
 #include "robot/debug/server.hpp"
 #include "tests/framework/fake_link.hpp"
+#include "timed_boundary.hpp"
 
 namespace stride::test {
-
-class TimedBoundary final : public FrameBoundary {
- public:
-  explicit TimedBoundary(FrameBoundary& inner) : inner_(inner) {}
-  void after_frame(Runtime& rt) override {
-    const auto t0 = std::chrono::steady_clock::now();
-    inner_.after_frame(rt);
-    const auto ns =
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0)
-            .count();
-    if (ns > longest_ns.load()) longest_ns = ns;
-  }
-  std::atomic<std::int64_t> longest_ns{0};
-
- private:
-  FrameBoundary& inner_;
-};
 
 class RobotLoop {
  public:
