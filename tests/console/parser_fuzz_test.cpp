@@ -19,7 +19,7 @@ namespace {
 std::vector<std::string> corpus() {
   std::vector<std::string> out;
   for (const auto& e :
-       std::filesystem::directory_iterator(STRIDE_SOURCE_DIR "/tests/fuzz/console_corpus")) {
+       std::filesystem::directory_iterator(STRIDE_SOURCE_DIR "/tests/fuzz_parser/corpus")) {
     std::ifstream in(e.path(), std::ios::binary);
     std::ostringstream s;
     s << in.rdbuf();

@@ -1,4 +1,4 @@
-// libFuzzer entry for LoLA's packet decoders: tests/fuzz_lola/run_lola_fuzz.sh builds it.
+// libFuzzer entry for LoLA's packet decoders (tests/fuzz_support/run_fuzzer.sh lola).
 #include "tests/fuzz_lola/lola_fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

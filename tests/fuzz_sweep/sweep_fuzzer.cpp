@@ -1,4 +1,4 @@
-// libFuzzer entry for the sweep engine's decoders: tests/fuzz_sweep/run_sweep_fuzz.sh builds it.
+// libFuzzer entry for the sweep engine's decoders (tests/fuzz_support/run_fuzzer.sh sweep).
 #include "tests/fuzz_sweep/sweep_fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

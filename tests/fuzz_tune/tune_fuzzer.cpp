@@ -1,4 +1,4 @@
-// libFuzzer entry for the tuning-file parser: tests/fuzz_tune/run_tune_fuzz.sh builds it.
+// libFuzzer entry for the tuning-file parser (tests/fuzz_support/run_fuzzer.sh tune).
 #include "tests/fuzz_tune/tune_fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
-// libFuzzer target for the console's pure parser: any text must either parse or be rejected with
-// stride::Error; anything else escaping (other exceptions, sanitizer reports) is a crash.
+// libFuzzer entry for the console's pure parser (tests/fuzz_support/run_fuzzer.sh parser): any text
+// must either parse or be rejected with stride::Error; anything else escaping is a crash.
 #include <cstddef>
 #include <cstdint>
 #include <string>
