@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
@@ -36,6 +37,9 @@ int main(int argc, char** argv) {
     return checked_exit(dispatch(args));
   } catch (const std::bad_alloc&) {
     std::cerr << "stride: out of memory\n";
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {  // a path the system refuses
+    std::cerr << "stride: " << e.what() << "\n";
     return 1;
   }
 }

@@ -52,7 +52,8 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
                          std::ostream& err) {
   // A relative directory not under the working directory is the data directory's (data_dir.hpp).
   const std::string scenes = o.scenes_dir.empty() ? "" : find_input(o.scenes_dir);
-  if (!scenes.empty() && !std::filesystem::is_directory(scenes))
+  std::error_code ec;  // a name the system refuses (too long) is not found either
+  if (!scenes.empty() && !std::filesystem::is_directory(scenes, ec))
     throw InputError("stride experiment " + name + ": --scenes: directory '" + o.scenes_dir +
                      "' not found");
   sweep::SweepRequest r;
@@ -106,7 +107,8 @@ std::string experiment_sweep_file(const std::string& name, const std::string& sw
                                        : " (expected one of " + experiment_names() + ")"));
   const std::filesystem::path p =
       std::filesystem::path(find_input(sweeps_dir)) / (name + ".sweep.xml");
-  if (!std::filesystem::exists(p))
+  std::error_code ec;
+  if (!std::filesystem::exists(p, ec))
     throw InputError("experiment sweep file " + quote(p.string()) +
                      " not found (--sweeps <dir> chooses another)");
   return p.string();

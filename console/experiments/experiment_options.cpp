@@ -16,7 +16,8 @@ std::string scene_path(const ExperimentOptions& o, const std::string& name) {
   // A relative directory not under the working directory is the data directory's (data_dir.hpp).
   const std::string dir = o.scenes_dir.empty() ? o.sweeps_dir : o.scenes_dir;
   const std::filesystem::path p = std::filesystem::path(find_input(dir)) / (name + ".xml");
-  if (!std::filesystem::exists(p))
+  std::error_code ec;  // a name the system refuses (too long) is not found either
+  if (!std::filesystem::exists(p, ec))
     throw InputError("experiment scene '" + p.string() +
                      "' not found (--scenes <dir> chooses another)");
   return p.string();

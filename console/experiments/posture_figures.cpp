@@ -55,7 +55,8 @@ void write_posture_figures(const std::string& out_dir, const sweep::SweepResult&
   // Row cells: run, scene, case, figure, thesis..., seed, status, ...
   for (const auto& row : result.rows) {
     const fs::path trace = fs::path(out_dir) / "traces" / ("run-" + row[0] + ".csv");
-    if (!fs::exists(trace)) continue;
+    std::error_code ec;
+    if (!fs::exists(trace, ec)) continue;
     const std::string& name = row[2];
     figure(trace.string(), (fs::path(out_dir) / ("posture_" + name)).string(), name + " " + row[3],
            name.rfind("ankle", 0) == 0);

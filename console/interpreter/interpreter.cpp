@@ -42,6 +42,8 @@ void Interpreter::execute(std::string_view line) {
     lost_connection(e.what());
   } catch (const std::bad_alloc&) {  // a command asked for more than the machine has
     throw Error(c.name + ": out of memory");
+  } catch (const std::filesystem::filesystem_error& e) {  // a path the system refuses
+    throw Error(c.name + ": " + e.what());
   }
 }
 
@@ -95,7 +97,8 @@ void Interpreter::run_inline(std::string_view commands) {
 std::string Interpreter::resolve(const std::string& path) const {
   if (fs::path(path).is_absolute() || script_stack_.empty()) return path;
   const fs::path beside = fs::path(script_stack_.back()).parent_path() / path;
-  return fs::exists(beside) ? beside.string() : path;
+  std::error_code ec;  // a name the system refuses (too long) is used as given, and fails there
+  return fs::exists(beside, ec) ? beside.string() : path;
 }
 
 // Legal but absurd parameters of the local controllers (of `module`, or all) get a note line, as
@@ -116,7 +119,8 @@ void Interpreter::load(const std::string& path) {
   out_ << "loaded " << local_.name() << "\n";
   note_parameters("");
   const fs::path script = fs::path(resolved).replace_extension(".con");
-  if (fs::exists(script)) {
+  std::error_code ec;
+  if (fs::exists(script, ec)) {
     out_ << "running " << script.string() << "\n";
     run_script(script.string());
   }

@@ -85,7 +85,7 @@ void create_output_dir(const std::string& dir) {
   const fs::path d(dir);
   std::error_code ec;
   fs::create_directories(d, ec);
-  if (ec || !fs::is_directory(d))
+  if (ec || !fs::is_directory(d, ec))
     throw Error("--out: cannot create directory '" + dir +
                 "': " + (ec ? ec.message() : std::string("not a directory")));
 }
@@ -136,7 +136,8 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
   const fs::path runs = d / "runs.csv";
   const std::string fingerprint = plan_fingerprint(sweep);
   const std::vector<std::string> header = sweep.csv_header();
-  if (resume && fs::exists(runs)) {
+  std::error_code ec;  // the directory was created and checked: an error reads as "absent"
+  if (resume && fs::exists(runs, ec)) {
     const std::string was = manifest_value(read_whole_file(d / "manifest.txt"), "plan");
     if (was != fingerprint)
       throw Error("--resume: '" + dir + "' holds another sweep's runs (plan " +
@@ -147,7 +148,7 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
     write_file("runs.csv", kept.empty() ? csv_line(header) : kept);  // drops a cut last line
     runs_fd_ = open_append(runs, false);
   } else {
-    if (fs::exists(runs) && !overwrite)
+    if (fs::exists(runs, ec) && !overwrite)
       throw Error("--out: '" + dir +
                   "' already holds a runs.csv (--resume to continue it, "
                   "--overwrite to start again)");
@@ -155,7 +156,7 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
     append(runs_fd_, csv_line(header), "runs.csv");
   }
   timing_fd_ = open_append(d / "timing.csv", !resume);
-  if (!resume || fs::file_size(d / "timing.csv") == 0)
+  if (!resume || fs::file_size(d / "timing.csv", ec) == 0)
     append(timing_fd_, "run,seconds,attempts,worker\n", "timing.csv");
   std::ostringstream m;
   m << "sweep: " << sweep.spec().name << "\nfile: " << sweep.spec().file
@@ -163,7 +164,6 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
     << "\nruns: " << sweep.plan().runs.size() << "\ncommand: " << command << "\n";
   write_file("manifest.txt", m.str());
   if (!sweep.spec().file.empty()) write_file("sweep.xml", read_whole_file(sweep.spec().file));
-  std::error_code ec;
   fs::create_directories(d / "traces", ec);
 }
 

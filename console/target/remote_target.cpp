@@ -208,7 +208,13 @@ std::string RemoteTarget::log_save(const std::string& path, const std::string& d
     std::remove(partial.c_str());
     throw Error("log save: '" + path + "' arrived damaged (SHA-256 differs); nothing written");
   }
-  std::filesystem::rename(partial, destination);
+  std::error_code ec;
+  std::filesystem::rename(partial, destination, ec);
+  if (ec) {
+    std::remove(partial.c_str());
+    throw Error("log save: cannot write '" + destination + "': " + ec.message() +
+                "; nothing written");
+  }
   return "downloaded " + path + " from " + name() + " (" + std::to_string(size) +
          " bytes, SHA-256 checked) as " + destination;
 }

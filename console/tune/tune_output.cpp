@@ -22,7 +22,7 @@ TuneOutput::TuneOutput(const std::string& dir, const std::string& file_text, boo
   sweep::create_output_dir(dir);
   const fs::path d(dir);
   std::error_code ec;
-  const bool holds = fs::exists(d / "tune.xml") || fs::exists(d / "generations");
+  const bool holds = fs::exists(d / "tune.xml", ec) || fs::exists(d / "generations", ec);
   if (resume && holds && sweep::read_whole_file((d / "tune.xml").string()) != file_text)
     throw Error("--resume: '" + dir + "' holds a search of another tuning file (tune.xml differs)");
   if (!resume && holds) {

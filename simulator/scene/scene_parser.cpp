@@ -56,7 +56,9 @@ class Parser {
 
   void parse_text(const std::string& text, const std::string& path,
                   const XmlElement* included_from) {
-    const std::string canonical = fs::weakly_canonical(fs::path(path)).string();
+    std::error_code ec;  // a name the system cannot resolve (too long) stands for itself
+    const fs::path resolved = fs::weakly_canonical(fs::path(path), ec);
+    const std::string canonical = ec ? path : resolved.string();
     if (open_files_.count(canonical)) included_from->fail("include cycle through '" + path + "'");
     open_files_.insert(canonical);
     // Documents stay alive while their file names are referenced by errors.

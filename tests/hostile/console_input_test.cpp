@@ -87,5 +87,18 @@ TEST(HostileConsole, UnsafeFilesForScriptCallLoadAndLogLoad) {
       {"-c:1: log '" + s.path("big.log") + "': 8589934593 bytes, over the limit of 8 GiB"});
 }
 
+// A name longer than the system's limit (255 bytes a component) made std::filesystem throw past
+// every handler (a call in a script, a --physics setting naming itself as the file): SIGABRT.
+TEST(HostileConsole, NamesLongerThanTheSystemAllows) {
+  const std::string name(300, 'a');
+  expect_command_refused("call " + name,
+                         {"-c:1: script '" + name + "': cannot open: File name too long"});
+  expect_refused(run_stride({"sweep", source_path("scenes/experiments/posture.sweep.xml"),
+                             "--physics", "solver=" + name}),
+                 {"--physics: physics setting 'solver=", "(300 characters)",
+                  "(expected one of exact, iterative, cg)"},
+                 2);
+}
+
 }  // namespace
 }  // namespace stride::hostile
