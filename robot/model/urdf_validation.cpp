@@ -210,6 +210,9 @@ struct Checker {
                       joint->GetLineNum()};
     check_origin(joint, what);
     if (const XMLElement* axis = joint->FirstChildElement("axis")) {
+      if (!axis->Attribute("xyz"))  // the URDF parser would read it as the zero vector
+        fail(axis,
+             what + ": <axis> without attribute 'xyz' (expected a direction, e.g. \"0 0 1\")");
       const auto a = bounded(axis, "xyz", what + " axis", 3, 1e6, "");
       if (a.size() == 3 && std::hypot(a[0], a[1], a[2]) < 1e-9)
         fail(axis,

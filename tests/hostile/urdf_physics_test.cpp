@@ -93,6 +93,14 @@ TEST(HostileUrdf, ZeroJointAxis) {
   a.axis = "0 0 0";
   expect_urdf_refused(a.text(),
                       {"r.urdf:10: joint 'j1': zero axis '0 0 0' (expected a non-zero direction)"});
+  // An <axis> whose xyz is missing (the physics fuzzer's find: ODE aborted normalising it).
+  a.axis = "0 1 0";
+  std::string text = a.text();
+  const std::string with_xyz = "<axis xyz=\"0 1 0\"/>";
+  ASSERT_NE(text.find(with_xyz), std::string::npos);
+  text.replace(text.find(with_xyz), with_xyz.size(), "<axis/>");
+  expect_urdf_refused(text, {"r.urdf:10: joint 'j1': <axis> without attribute 'xyz' (expected a "
+                             "direction, e.g. \"0 0 1\")"});
 }
 
 TEST(HostileUrdf, LinkWithTwoParents) {
