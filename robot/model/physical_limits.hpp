@@ -13,6 +13,7 @@ inline constexpr double kMinLength = 1e-6;      // m: the smallest shape size
 inline constexpr double kMaxMass = 1e5;         // kg per link
 inline constexpr double kMinInertia = 1e-12;    // kg m^2: smallest principal moment (no denormals)
 inline constexpr double kMaxInertia = 1e5;      // kg m^2: largest principal moment
+inline constexpr double kMaxFrameMass = 1e-6;   // kg: the most a link without inertia may weigh
 inline constexpr double kMaxForce = 1e7;        // N (and N m for joint efforts)
 inline constexpr double kMaxSpeed = 1e4;        // rad/s or m/s: joint velocity limits
 inline constexpr double kMaxJointRange = 1e3;   // rad or m: |lower|, |upper| of a joint

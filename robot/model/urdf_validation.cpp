@@ -99,15 +99,25 @@ struct Checker {
   void check_inertial(const XMLElement* inertial, const std::string& what) const {
     const XMLElement* mass = inertial->FirstChildElement("mass");
     if (!mass) fail(inertial, what + ": <inertial> without <mass>");
-    in_range(mass, "value", what + " mass", 0, limits::kMaxMass, "kg");
+    const double kg = in_range(mass, "value", what + " mass", 0, limits::kMaxMass, "kg");
     check_origin(inertial, what + " inertial");
+    // A mass with no rotational inertia is a body the solver cannot turn: ODE's step goes NaN
+    // and aborts. Only a massless frame link may leave its inertia out (or zero).
+    const auto frame_only = [&](const XMLElement* e, const char* missing) {
+      if (kg > limits::kMaxFrameMass)
+        fail(e, what + ": " + missing + " for a mass of " + short_number(kg) +
+                    " kg (expected principal moments in [" + short_number(limits::kMinInertia) +
+                    ", " + short_number(limits::kMaxInertia) + "] kg*m^2; only a link of at most " +
+                    short_number(limits::kMaxFrameMass) + " kg may have none)");
+    };
     const XMLElement* in = inertial->FirstChildElement("inertia");
-    if (!in) return;
+    if (!in) return frame_only(inertial, "<inertial> without <inertia>");
     double v[6];
     const char* names[] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
     for (int k = 0; k < 6; ++k) v[k] = required_number(in, names[k], what + " inertia");
     Eigen::Matrix3d i;
     i << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
+    if (i.isZero(0)) return frame_only(in, "zero inertia");
     if (const std::string problem = inertia_problem(i); !problem.empty())
       fail(in, what + ": inertia " + problem);
   }

@@ -59,6 +59,23 @@ TEST(HostileUrdf, DenormalAndHugeInertias) {
                                  "outside [1e-12, 100000]"});
 }
 
+// A mass without rotational inertia (the physics fuzzer's find: ODE's step went NaN and aborted);
+// a massless frame link may still leave it out.
+TEST(HostileUrdf, MassWithoutInertia) {
+  Arm a;
+  a.inertia = R"(ixx="0" iyy="0" izz="0" ixy="0" ixz="0" iyz="0")";
+  expect_urdf_refused(a.text(), {"r.urdf:5: link 'base': zero inertia for a mass of 1 kg",
+                                 "expected principal moments in [1e-12, 100000] kg*m^2",
+                                 "only a link of at most 1e-06 kg may have none"});
+  a.inertia = "zzz=\"0\"";
+  std::string text = a.text();
+  const std::string element = "      <inertia zzz=\"0\"/>";
+  ASSERT_NE(text.find(element), std::string::npos);
+  text.erase(text.find(element), element.size());
+  expect_urdf_refused(text,
+                      {"r.urdf:4: link 'base': <inertial> without <inertia> for a mass of 1 kg"});
+}
+
 TEST(HostileUrdf, HugeMass) {
   Arm a;
   a.mass = "1e300";
