@@ -96,7 +96,8 @@ struct Checker {
     }
   }
 
-  void check_inertial(const XMLElement* inertial, const std::string& what) const {
+  // Returns the link's mass [kg].
+  double check_inertial(const XMLElement* inertial, const std::string& what) const {
     const XMLElement* mass = inertial->FirstChildElement("mass");
     if (!mass) fail(inertial, what + ": <inertial> without <mass>");
     const double kg = in_range(mass, "value", what + " mass", 0, limits::kMaxMass, "kg");
@@ -111,15 +112,22 @@ struct Checker {
                     short_number(limits::kMaxFrameMass) + " kg may have none)");
     };
     const XMLElement* in = inertial->FirstChildElement("inertia");
-    if (!in) return frame_only(inertial, "<inertial> without <inertia>");
+    if (!in) {
+      frame_only(inertial, "<inertial> without <inertia>");
+      return kg;
+    }
     double v[6];
     const char* names[] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
     for (int k = 0; k < 6; ++k) v[k] = required_number(in, names[k], what + " inertia");
     Eigen::Matrix3d i;
     i << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
-    if (i.isZero(0)) return frame_only(in, "zero inertia");
+    if (i.isZero(0)) {
+      frame_only(in, "zero inertia");
+      return kg;
+    }
     if (const std::string problem = inertia_problem(i); !problem.empty())
       fail(in, what + ": inertia " + problem);
+    return kg;
   }
 
   void check_shape(const XMLElement* shape, const std::string& what) const {
@@ -158,8 +166,9 @@ struct Checker {
     if (!name) fail(link, "<link> without a name");
     const std::string what = std::string("link '") + name + "'";
     check_all_numbers(link, what);
+    double kg = 0;
     if (const XMLElement* inertial = link->FirstChildElement("inertial"))
-      check_inertial(inertial, what);
+      kg = check_inertial(inertial, what);
     for (const XMLElement* col = link->FirstChildElement("collision"); col;
          col = col->NextSiblingElement("collision")) {
       const XMLElement* geom = col->FirstChildElement("geometry");
@@ -167,6 +176,12 @@ struct Checker {
         fail(col, what + ": <collision> without a <geometry> shape");
       check_origin(col, what + " collision");
       check_shape(geom->FirstChildElement(), what);
+      // Contact on a near-massless body (a frame link gets 1e-6 kg) drives ODE's step to NaN.
+      if (kg <= limits::kMaxFrameMass)
+        fail(col,
+             what + ": a collision shape on a link of mass " + short_number(kg) +
+                 " kg (a frame link touches nothing; expected an <inertial> with a mass over " +
+                 short_number(limits::kMaxFrameMass) + " kg and its inertia)");
     }
     return {name, link->GetLineNum()};
   }

@@ -31,6 +31,7 @@ cmake --build build-fuzz --target "${name}_fuzzer" -j 2
 mkdir -p "build-fuzz/${name}_corpus" "build-fuzz/${name}_artifacts"
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS="suppressions=$root/.ci/lsan.supp:print_suppressions=0"
-exec "build-fuzz/tests/${name}_fuzzer" -max_total_time="$seconds" -max_len="$max_len" \
+cd build-fuzz  # with -jobs=N libFuzzer writes fuzz-<k>.log here
+exec "./tests/${name}_fuzzer" -max_total_time="$seconds" -max_len="$max_len" \
   -timeout=30 -print_final_stats=1 -artifact_prefix="$root/build-fuzz/${name}_artifacts/" "$@" \
   "$root/build-fuzz/${name}_corpus" "$root/tests/$folder/corpus"

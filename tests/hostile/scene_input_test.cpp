@@ -116,7 +116,7 @@ TEST(HostileScene, AbsurdPlacementsAndPushes) {
 TEST(HostileScene, DivergingPushIsCaughtBeforeOde) {
   Scratch s;
   Arm light;
-  light.mass = "1e-6";
+  light.mass = "2e-6";  // just over a frame link's mass, so it may touch the ground
   light.inertia = R"(ixx="1e-12" iyy="1e-12" izz="1e-12" ixy="0" ixz="0" iyz="0")";
   s.write("r.urdf", light.text());
   expect_scene_refused(
@@ -138,7 +138,10 @@ TEST(HostileScene, SceneLimits) {
                        {"s.xml:4: <uneven>: the scene's static shapes would number 591408 "
                         "(boxes, ramps and uneven tiles; at most 500000)"});
   // A robot with more collision shapes than the scene holds.
-  std::string many = "<?xml version=\"1.0\"?>\n<robot name=\"many\"><link name=\"l\">\n";
+  std::string many =
+      "<?xml version=\"1.0\"?>\n<robot name=\"many\"><link name=\"l\"><inertial><mass "
+      "value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" ixy=\"0\" ixz=\"0\" "
+      "iyz=\"0\"/></inertial>\n";
   for (int i = 0; i < 20001; ++i)
     many += "<collision><geometry><sphere radius=\"0.01\"/></geometry></collision>\n";
   s.write("many.urdf", many + "</link></robot>\n");
