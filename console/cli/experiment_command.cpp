@@ -1,6 +1,6 @@
 // `stride experiment <name> [--seeds N] [--jobs N] [--out dir] [--scenes dir] [--sweeps dir]
 // [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] [--physics a=v,b=w]
-// [--cases a,b] [--only column=a,b ...]`: the thesis'
+// [--cases a,b] [--only column=a,b ...] [--through-lola | --lola-packets]`: the thesis'
 // Chapter 4 experiments. All but kalman are sweep files in scenes/experiments run by the sweep
 // engine (`stride sweep` runs the same files); --jobs walks at once (default: hardware threads),
 // the results do not depend on it; under mpirun the walks spread over the ranks.
@@ -29,6 +29,7 @@ int experiment_main(Args args, std::ostream& out, std::ostream& err) {
     o.plots = !a.flag("--no-plots");  // before positional(), which skips a flag's value
     o.resume = a.flag("--resume");
     o.quiet = a.flag("--quiet");
+    o.link = sweep::link_flags(a.flag("--through-lola"), a.flag("--lola-packets"), "experiment");
     const std::string name = a.positional(
         "experiment: posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
         "push-recovery|landing-control");

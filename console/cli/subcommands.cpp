@@ -72,9 +72,11 @@ const std::vector<Subcommand>& subcommands() {
        pattern_main},
       {"sweep",
        "sweep <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet] [--seeds N] "
-       "[--scenes dir] [--set target=value ...] [--only column=a,b ...] [--no-plots] [--mpi]: "
-       "the runs of a sweep file (scenes x factors x seeds) on local worker processes, or on MPI "
-       "ranks under mpirun/srun; one CSV row per run, tallies printed",
+       "[--scenes dir] [--set target=value ...] [--only column=a,b ...] [--no-plots] [--mpi] "
+       "[--through-lola | --lola-packets]: the runs of a sweep file (scenes x factors x seeds) on "
+       "local worker processes, or on MPI ranks under mpirun/srun; one CSV row per run, tallies "
+       "printed (--through-lola: each run's controller a started `stride robot` on LoLA, "
+       "lockstep; --lola-packets: in process through LoLA's packets)",
        sweep_main},
       {"tune",
        "tune <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet] [--set "
@@ -86,7 +88,8 @@ const std::vector<Subcommand>& subcommands() {
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
        "push-recovery|landing-control [--seeds N] [--jobs N] [--out dir] [--scenes dir] "
        "[--sweeps dir] [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] "
-       "[--physics a=v,b=w] [--cases a,b] [--only column=a,b ...]: the experiments, the sweep "
+       "[--physics a=v,b=w] [--cases a,b] [--only column=a,b ...] [--through-lola | "
+       "--lola-packets]: the experiments, the sweep "
        "files "
        "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
        "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "

@@ -1,7 +1,9 @@
 // `stride sweep <file.xml> [--jobs N] [--out dir] [--resume] [--overwrite] [--quiet]
 // [--seeds N] [--scenes dir] [--set target=value ...] [--physics a=v,b=w] [--only column=a,b ...]
-// [--no-plots] [--mpi]`: a sweep file's runs on this machine's cores, or on MPI ranks when
-// mpirun/srun starts it; one CSV row per run in <out>/runs.csv and the tallies printed.
+// [--no-plots] [--mpi] [--through-lola | --lola-packets]`: a sweep file's runs on this machine's
+// cores, or on MPI ranks when mpirun/srun starts it; one CSV row per run in <out>/runs.csv and the
+// tallies printed. --through-lola: each run's robot 0 controlled by a started `stride robot` over
+// LoLA in lockstep; --lola-packets: by its in-process controller through LoLA's packets.
 #include <filesystem>
 #include <ostream>
 
@@ -22,6 +24,7 @@ sweep::SweepRequest sweep_request_flags(ArgumentReader& a, const std::string& co
   r.options.plots = !a.flag("--no-plots");
   r.quiet = a.flag("--quiet");
   r.force_mpi = a.flag("--mpi");
+  r.link = sweep::link_flags(a.flag("--through-lola"), a.flag("--lola-packets"), command);
   if (a.has("--jobs")) {
     const std::uint64_t n = a.unsigned_integer("--jobs");
     if (n < 1 || n > 1024) throw Error("stride " + command + ": --jobs: expected 1..1024");

@@ -72,6 +72,7 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   r.options.plots = o.plots;
   r.options.command = o.command;
   r.options.only = o.only;
+  r.link = o.link;
   if (!o.cases.empty()) {
     r.options.only.push_back(
         {"case", posture_case_levels(sweep::Sweep(sweep::request_spec(r), false), o.cases)});

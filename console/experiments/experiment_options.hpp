@@ -30,6 +30,8 @@ struct ExperimentOptions {
   // --only column=a,b: only the runs with these levels (seed-major studies: --only seed=1,2).
   std::vector<std::pair<std::string, std::vector<std::string>>> only;
   std::string command;  // the command line, for a sweep's manifest
+  // --through-lola / --lola-packets: where robot 0's controller runs (sweep_spec.hpp).
+  sweep::RobotLink link = sweep::RobotLink::InProcess;
 };
 
 // The scene <name>.xml the kalman study walks: in scenes_dir if given, else in sweeps_dir.

@@ -45,10 +45,13 @@ std::optional<WalkPatternInfo> walk_pattern_info(SimSession& session) {
   return info;
 }
 
-WalkFrameObserver::WalkFrameObserver(SimSession& session) {
+WalkFrameObserver::WalkFrameObserver(SimSession& session)
+    : WalkFrameObserver(session, walk_pattern_info(session)) {}
+
+WalkFrameObserver::WalkFrameObserver(SimSession& session, std::optional<WalkPatternInfo> pattern) {
   if (session.simulation().robot_count() == 0) return;
   rt_ = session.runtime(0);
-  info_ = walk_pattern_info(session);
+  info_ = std::move(pattern);
   if (info_) {
     const walking::PatternParameters p = behaviours::walk_pattern_parameters(info_->parameters);
     if (info_->module != "ConventionalWalk")

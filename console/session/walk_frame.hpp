@@ -57,6 +57,9 @@ std::optional<WalkPatternInfo> walk_pattern_info(SimSession& session);
 class WalkFrameObserver {
  public:
   explicit WalkFrameObserver(SimSession& session);
+  // With the pattern given: robot 0's controller runs elsewhere (a robot process on LoLA), so
+  // the session cannot say which pattern it plays; the columns only it could give are NaN.
+  WalkFrameObserver(SimSession& session, std::optional<WalkPatternInfo> pattern);
   ~WalkFrameObserver();
   WalkFrameObserver(const WalkFrameObserver&) = delete;
   WalkFrameObserver& operator=(const WalkFrameObserver&) = delete;

@@ -157,6 +157,15 @@ Factor parse_factor(const XmlElement& e) {
   return f;
 }
 
+Block::Range parse_range(const XmlElement& c) {
+  c.allow_only({"name", "target", "min", "max", "format"});
+  Block::Range r{c.text("name"),  split_list(c.text("target")), c.number("min"),
+                 c.number("max"), c.text_or("format", "{}"),    c.line()};
+  if (!(r.max > r.min)) c.fail_attr("max", "expected max > min");
+  if (r.targets.empty()) c.fail_attr("target", "expected at least one target");
+  return r;
+}
+
 Block parse_block(const XmlElement& e) {
   Block b;
   const bool grid = e.name() == "grid";
@@ -179,12 +188,7 @@ Block parse_block(const XmlElement& e) {
     } else if (grid && c.name() == "factor") {
       b.factors.push_back(parse_factor(c));
     } else if (!grid && c.name() == "range") {
-      c.allow_only({"name", "target", "min", "max", "format"});
-      Block::Range r{c.text("name"),  split_list(c.text("target")), c.number("min"),
-                     c.number("max"), c.text_or("format", "{}"),    c.line()};
-      if (!(r.max > r.min)) c.fail_attr("max", "expected max > min");
-      if (r.targets.empty()) c.fail_attr("target", "expected at least one target");
-      b.ranges.push_back(std::move(r));
+      b.ranges.push_back(parse_range(c));
     } else {
       c.fail(grid ? "unknown element (expected set, column or factor)"
                   : "unknown element (expected set, column or range)");
@@ -230,6 +234,10 @@ SeedsElement parse_seeds_element(const XmlElement& e) {
     e.fail_attr("heading_spread", "expected 0 to 0.5 rad");
   if (!(s.position_spread >= 0 && s.position_spread <= 0.5))
     e.fail_attr("position_spread", "expected 0 to 0.5 m");
+  children(e, [&](const XmlElement& c) {
+    if (c.name() != "range") c.fail("unknown element (expected range)");
+    s.draws.push_back(parse_range(c));
+  });
   return s;
 }
 

@@ -8,6 +8,7 @@
 #include "console/session/walk_frame.hpp"
 #include "console/sweep/run_keys.hpp"
 #include "console/sweep/run_session.hpp"
+#include "console/sweep/run_world.hpp"
 #include "console/sweep/summary_stat.hpp"
 #include "console/sweep/sweep_compiled.hpp"
 #include "robot/core/error.hpp"
@@ -57,13 +58,15 @@ void append_trace_row(std::string& csv, const std::vector<int>& keys, const std:
 std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& c,
                                      const RunPlan& run, std::string& trace_csv) {
   const SweepSpec& spec = sweep.spec();
-  auto session = build_run_session(spec, run);
+  RunWorld world(spec, run);
+  console::SimSession* session = &world.session();
   auto& sim = session->simulation();
   if (sim.robot_count() == 0) throw Error(scene_path_of(spec, run) + ": the scene has no robot");
   std::optional<console::WalkFrameObserver> walk;
-  if (c.walk_frame) walk.emplace(*session);
+  // Through LoLA the observer always runs: only it knows the pattern robot 0 plays elsewhere.
+  if (c.walk_frame || world.through_lola()) walk.emplace(*session, world.walk());
   Marks marks;
-  marks.walk = console::walk_pattern_info(*session);
+  marks.walk = world.walk();
   if (spec.until.mark == "end") throw Error("the run's length cannot be relative to its end");
   // The run ends on the physics step nearest its mark, and a summary through the end includes that
   // step's frame: an end of 2 + 10.799999999999999 + 1 s is step 13800, whose frame is at 13.8 s.
@@ -88,7 +91,7 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
       trace_csv += '\n';
     }
 
-  session->set_frame_observer(0, [&](sim::SimulatedRobot& robot) {
+  world.set_frame_observer([&](sim::SimulatedRobot& robot) {
     if (walk) walk->observe(robot);
     keys.sample();
     const double t = robot.latest_sensors().time;
@@ -126,6 +129,7 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
       values[i] = read_key(*session, walk ? &*walk : nullptr, spec.record.values[i].key);
   }
 
+  world.finish();
   std::vector<Cell> row = plan_values;
   row.insert(row.end(), values.begin(), values.end());
   const double period = sim.robot(0).period();

@@ -86,6 +86,20 @@ std::vector<Point> sampled_points(const Block& b) {
   return points;
 }
 
+// The seed's own draws: a generator of the seed alone (mixed with a constant, so it is not the
+// start perturbation's stream), one uniform number per range in order.
+Point seed_draws(const std::vector<Block::Range>& ranges, std::uint64_t seed) {
+  SampleRng rng{seed ^ 0x2545f4914f6cdd1dULL};
+  Point p;
+  for (const Block::Range& range : ranges) {
+    const double v = range.min + rng.uniform() * (range.max - range.min);
+    const std::string text = format_value(range.format, v);
+    for (const std::string& t : range.targets) p.settings.push_back({t, text});
+    p.cells.emplace_back(range.name, number_text(v));
+  }
+  return p;
+}
+
 }  // namespace
 
 std::string number_text(double v) {
@@ -132,6 +146,7 @@ Plan expand(const SweepSpec& spec, std::size_t max_runs) {
   }
   if (blocks.empty()) blocks.push_back({Point{}});
   const std::size_t seed_column = columns.index("seed");
+  for (const Block::Range& r : spec.seed_draws) columns.index(r.name);
   plan.columns = columns.names;
   for (const auto& points : blocks)
     for (const Point& p : points)
@@ -140,9 +155,12 @@ Plan expand(const SweepSpec& spec, std::size_t max_runs) {
         run.id = static_cast<std::int64_t>(plan.runs.size());
         run.settings = spec.settings;
         run.settings.insert(run.settings.end(), p.settings.begin(), p.settings.end());
+        const Point drawn = seed_draws(spec.seed_draws, seed);
+        run.settings.insert(run.settings.end(), drawn.settings.begin(), drawn.settings.end());
         run.settings.push_back({"seed", std::to_string(seed)});
         run.cells.assign(plan.columns.size(), "");
         for (const auto& [name, text] : p.cells) run.cells[columns.index(name)] = text;
+        for (const auto& [name, text] : drawn.cells) run.cells[columns.index(name)] = text;
         for (const Setting& s : run.settings)
           if (s.target == "scene") run.cells[0] = s.value;
         run.cells[seed_column] = std::to_string(seed);

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <filesystem>
 
+#include "console/cli/lola_run.hpp"
 #include "console/sweep/scene_edit.hpp"
 #include "console/sweep/sweep.hpp"
 #include "robot/core/error.hpp"
@@ -21,6 +22,14 @@ std::string scene_path_of(const SweepSpec& spec, const RunPlan& run) {
   return p.lexically_normal().string();
 }
 
+bool is_provider_setting(const Setting& s) {
+  return s.target.rfind("provider:", 0) == 0;
+}
+
+bool is_parameter_setting(const Setting& s) {
+  return s.target.find('.') != std::string::npos && s.target.find(':') == std::string::npos;
+}
+
 void check_setting_target(const std::string& t) {
   if (t == "scene" || t == "seed") return;
   if (t.rfind("scene:", 0) == 0) return check_scene_target(t);
@@ -34,7 +43,7 @@ void check_setting_target(const std::string& t) {
               "scene:<element>@<attribute>");
 }
 
-std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, const RunPlan& run) {
+sim::SceneDescription run_scene(const SweepSpec& spec, const RunPlan& run, RobotLink link) {
   const std::string scene = scene_path_of(spec, run);
   std::vector<Setting> edits;
   std::optional<std::uint64_t> seed;
@@ -54,18 +63,30 @@ std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, co
                                   spec.start_position_spread};
     sim::apply_start(d, sim::ensemble_member(start, 0));
   }
-  auto session = std::make_unique<console::SimSession>(std::move(d));
+  if (link == RobotLink::InProcess) return d;
+  // As `stride run --lola-packets` / `--lola` make it: LoLA's 12 ms unless the scene states a
+  // period; with a robot process, no controller here.
+  cli::LolaRunOptions o;
+  o.packets = link == RobotLink::Packets;
+  if (!o.packets) o.socket = "(the run's robot process)";
+  return cli::lola_scene(std::move(d), o);
+}
+
+std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, const RunPlan& run,
+                                                       RobotLink link) {
+  if (link == RobotLink::Lola)
+    throw Error("build_run_session: a run through LoLA has no controller in this process");
+  const std::string scene = scene_path_of(spec, run);
+  auto session = std::make_unique<console::SimSession>(run_scene(spec, run, link));
+  if (link == RobotLink::Packets) session->route_through_lola_packets(0);
   Runtime* rt = session->simulation().robot_count() > 0 ? session->runtime(0) : nullptr;
   // Providers first, then parameters in order: a parameter may belong to a swapped-in module.
   for (int pass = 0; pass < 2; ++pass)
     for (const Setting& s : run.settings) {
-      const bool provider = s.target.rfind("provider:", 0) == 0;
-      const bool parameter =
-          s.target.find('.') != std::string::npos && s.target.find(':') == std::string::npos;
-      if (!(pass == 0 ? provider : parameter)) continue;
+      if (!(pass == 0 ? is_provider_setting(s) : is_parameter_setting(s))) continue;
       if (!rt) throw Error(scene + ": " + s.target + ": robot 0 has no <controller>");
       try {
-        if (provider) {
+        if (pass == 0) {
           rt->swap_provider(s.target.substr(9), s.value);
         } else {
           const std::size_t dot = s.target.find('.');
@@ -76,6 +97,14 @@ std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, co
       }
     }
   return session;
+}
+
+ControllerConfig run_controller(ControllerConfig scene_controller, const RunPlan& run) {
+  for (const Setting& s : run.settings) {
+    if (is_provider_setting(s)) scene_controller.providers[s.target.substr(9)] = s.value;
+    if (is_parameter_setting(s)) scene_controller.parameters[s.target] = s.value;
+  }
+  return scene_controller;
 }
 
 }  // namespace stride::sweep

@@ -119,6 +119,8 @@ std::string plan_fingerprint(const Sweep& sweep) {
   if (spec.start_heading_spread > 0 || spec.start_position_spread > 0)  // older plans: unchanged
     h = fnv1a(h, "start " + std::to_string(spec.start_heading_spread) + " " +
                      std::to_string(spec.start_position_spread));
+  if (spec.robot_link != RobotLink::InProcess)  // LoLA's rows differ: never resumed as in-process
+    h = fnv1a(h, spec.robot_link == RobotLink::Lola ? "link lola" : "link packets");
   for (const RunPlan& r : sweep.plan().runs) {
     for (const Setting& s : r.settings) h = fnv1a(fnv1a(h, s.target), s.value);
     for (const std::string& c : r.cells) h = fnv1a(h, c);

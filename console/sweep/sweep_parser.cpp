@@ -180,6 +180,7 @@ void parse_root(const XmlElement& root, SweepSpec& s) {
       s.seeds = std::move(e.seeds), seeds = true;
       s.start_heading_spread = e.heading_spread;
       s.start_position_spread = e.position_spread;
+      s.seed_draws = std::move(e.draws);
     } else if (n == "run") {
       c.allow_only({"seconds", "until"});
       if (run || c.has("seconds") == c.has("until"))

@@ -65,6 +65,12 @@ std::vector<Setting> physics_settings(const std::string& text) {
   return out;
 }
 
+RobotLink link_flags(bool through_lola, bool packets, const std::string& command) {
+  if (through_lola && packets)
+    throw Error("stride " + command + ": --through-lola and --lola-packets: expected one of them");
+  return through_lola ? RobotLink::Lola : packets ? RobotLink::Packets : RobotLink::InProcess;
+}
+
 std::pair<std::string, std::vector<std::string>> parse_only(const std::string& text) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
@@ -80,6 +86,7 @@ SweepSpec request_spec(const SweepRequest& r) {
   }
   if (!r.scenes_dir.empty()) spec.scene_dir = r.scenes_dir;
   spec.settings.insert(spec.settings.begin(), r.settings.begin(), r.settings.end());
+  spec.robot_link = r.link;
   return spec;
 }
 

@@ -19,8 +19,13 @@ struct SweepRequest {
   std::string scenes_dir;         // non-empty: scenes resolve here instead of the file's directory
   std::vector<Setting> settings;  // --set target=value, before everything the file sets
   SweepOptions options;
-  bool quiet = false;  // no progress lines
+  bool quiet = false;                     // no progress lines
+  RobotLink link = RobotLink::InProcess;  // --through-lola, --lola-packets
 };
+
+// --through-lola / --lola-packets (at most one) as a link; `command` names the command in the
+// error for both.
+RobotLink link_flags(bool through_lola, bool packets, const std::string& command);
 
 // "PatternWalk.steps=6", "scene:robot/motor[name=pitch]@gain=50" -> Setting; throws on text
 // without a target or value.

@@ -145,6 +145,11 @@ struct PlotSpec {
   std::string where;
 };
 
+// How robot 0's controller reaches its simulated robot in every run: as the scene says (in
+// process), in process through LoLA's packets at LoLA's 12 ms (`stride run --lola-packets`), or
+// as a started `stride-robot` over a LoLA socket in lockstep (`stride run --lola`).
+enum class RobotLink { InProcess, Packets, Lola };
+
 struct SweepSpec {
   std::string name;
   std::string file;               // the sweep file ("" when built in code)
@@ -159,7 +164,12 @@ struct SweepSpec {
   // uncontrolled walk is the same walk under every seed.
   double start_heading_spread = 0;   // rad
   double start_position_spread = 0;  // m
-  TimePoint until{"end", 0};         // the run's length, as a time point (mark "end" invalid)
+  // <seeds><range .../></seeds>: each range drawn once per seed, uniform in [min, max) from the
+  // seed alone (not from the level), so run s of every level gets the same value: a quantity
+  // such as a push's gait phase that should vary over the seeds as the start does.
+  std::vector<Block::Range> seed_draws;
+  RobotLink robot_link = RobotLink::InProcess;
+  TimePoint until{"end", 0};  // the run's length, as a time point (mark "end" invalid)
   RecordSpec record;
   std::vector<TallySpec> tallies;
   std::vector<PlotSpec> plots;

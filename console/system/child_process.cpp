@@ -1,14 +1,19 @@
 #include "console/system/child_process.hpp"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
+#include <thread>
 
 #include "robot/core/error.hpp"
 
@@ -111,6 +116,72 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::string& i
   r.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   return r;
+}
+
+RunningChild::RunningChild(const std::vector<std::string>& argv, const std::string& log) {
+  if (argv.empty()) throw Error("RunningChild: no program given");
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (out < 0) throw Error("cannot open " + log + ": " + std::strerror(errno));
+  const int in = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  const pid_t parent = ::getpid();
+  // fork + exec rather than posix_spawn: only the child can ask for PR_SET_PDEATHSIG. Between
+  // fork and exec the child calls async-signal-safe functions only.
+  pid_ = ::fork();
+  if (pid_ == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // the parent already went
+    if (in >= 0) ::dup2(in, 0);
+    ::dup2(out, 1);
+    ::dup2(out, 2);
+    ::execv(args[0], args.data());
+    ::_exit(127);
+  }
+  const int fork_errno = errno;
+  started_ = pid_;
+  ::close(out);
+  if (in >= 0) ::close(in);
+  if (pid_ < 0) throw Error("cannot start '" + argv[0] + "': " + std::strerror(fork_errno));
+}
+
+RunningChild::~RunningChild() {
+  stop();
+}
+
+void RunningChild::reaped(int status) {
+  pid_ = -1;
+  if (WIFEXITED(status))
+    how_ = WEXITSTATUS(status) == 127 ? "could not be executed (exit status 127)"
+                                      : "exit status " + std::to_string(WEXITSTATUS(status));
+  else
+    how_ = "killed by signal " + std::to_string(WTERMSIG(status));
+}
+
+bool RunningChild::ended() {
+  if (pid_ < 0) return true;
+  int status = 0;
+  const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+  if (r == pid_) reaped(status);
+  return pid_ < 0;
+}
+
+const std::string& RunningChild::stop(double grace) {
+  if (ended()) return how_;
+  ::kill(pid_, SIGTERM);
+  const auto until =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(grace > 0 ? grace : 0);
+  while (!ended() && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (pid_ >= 0) {
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    reaped(status);
+  }
+  return how_;
 }
 
 }  // namespace stride::console

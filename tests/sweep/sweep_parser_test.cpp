@@ -99,6 +99,35 @@ TEST(SweepParser, BlocksAreUnionedAndSamplesAreSeededAndStratified) {
 // Two factors of 2000 and 1000 levels are legal one by one, but their grid (2e6 runs) is refused
 // before any point is built (two of 100000 levels would exhaust memory); the count is in the
 // message.
+TEST(SweepParser, ASeedsRangeIsOneDrawPerSeedTheSameForEveryLevel) {
+  const SweepSpec s = parse(R"(<scene file="a.xml"/>
+<factor name="N" target="scene:push@force" values="10 20"/>
+<seeds count="3"><range name="at" target="scene:push@start" min="6" max="6.5" format="{}s"/></seeds>
+<run seconds="2s"/>)");
+  const Plan p = expand(s);
+  EXPECT_EQ(p.columns, (std::vector<std::string>{"scene", "N", "seed", "at"}));
+  ASSERT_EQ(p.runs.size(), 6u);
+  std::vector<double> draws;
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(p.runs[k].cells[3], p.runs[k + 3].cells[3]) << "seed " << k + 1;  // N = 10, 20
+    const double at = std::stod(p.runs[k].cells[3]);
+    EXPECT_GE(at, 6.0);
+    EXPECT_LT(at, 6.5);
+    draws.push_back(at);
+    const Setting& set = p.runs[k].settings.at(2);  // scene, N, the draw, seed
+    EXPECT_EQ(set.target, "scene:push@start");
+    EXPECT_EQ(set.value, p.runs[k].cells[3] + "s");
+    EXPECT_EQ(p.runs[k].settings.at(3).target, "seed");
+  }
+  EXPECT_NE(draws[0], draws[1]);
+  EXPECT_NE(draws[1], draws[2]);
+  // Seed 1's draw is fixed by the seed alone: the same on every machine.
+  EXPECT_EQ(p.runs[0].cells[3], "6.253390343518446");
+  EXPECT_NE(error(R"(<seeds count="2"><factor name="x" values="1"/></seeds>)")
+                .find("unknown element (expected range)"),
+            std::string::npos);
+}
+
 TEST(SweepParser, AGridBeyondAMillionRunsIsRefusedBeforeItIsBuilt) {
   const SweepSpec s = parse(R"(<scene file="a.xml"/>
 <factor name="kp" target="HipStrategy.kp_pitch" range="0:1999:1"/>
