@@ -42,8 +42,12 @@ struct Snapshot {
   std::string debug_stop;
   std::vector<std::pair<std::string, double>> debug_values;
   std::vector<std::unique_ptr<Slot>> copies;  // per slot: the value at the boundary (or stale)
-  std::string bytes;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // per slot: offset, size
+  // The loop writes only these two (the slots it copied); every line of the rest was last written
+  // by the server thread, and writing it again from the loop's core would pull it across.
+  std::uint32_t slot_count = 0;
+  std::vector<std::uint32_t> copied;
+  std::string bytes;                                           // server thread
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> parts;  // server: per slot offset, size
   static constexpr std::uint32_t kAbsent = 0xffffffffu;
 };
 
@@ -100,10 +104,11 @@ struct Exchange {
 
   std::array<std::atomic<std::uint64_t>, kMaxSlots / 64> wanted{};  // slot bits the server needs
   std::atomic<std::uint64_t> wanted_generation{0};                  // catalogue the bits index
-  std::atomic<bool> clients{false};              // anyone connected: snapshots are worth making
-  std::atomic<std::uint64_t> snapshots_lost{0};  // full ring: the server thread fell behind
-  std::atomic<std::uint64_t> frames{0};          // frames the loop has passed
-  std::atomic<double> period{0};                 // the loop's control period
+  std::atomic<bool> clients{false};                // anyone connected: snapshots are worth making
+  std::atomic<std::uint64_t> snapshots_lost{0};    // full ring: the server thread fell behind
+  std::atomic<std::uint64_t> loop_allocations{0};  // snapshot buffers and copies the loop made
+  std::atomic<std::uint64_t> frames{0};            // frames the loop has passed
+  std::atomic<double> period{0};                   // the loop's control period
   int wake_fd = -1;  // eventfd the loop pokes after a reply (server thread owns it)
 };
 

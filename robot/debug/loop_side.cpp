@@ -131,7 +131,11 @@ bool LoopSide::wanted_changed() {
 
 bool LoopSide::publish(bool new_frame) {
   std::unique_ptr<Snapshot> s;
-  if (!x_.spent.try_pop(s)) s = std::make_unique<Snapshot>();
+  if (!x_.spent.try_pop(s)) {
+    s = std::make_unique<Snapshot>();
+    s->copied.reserve(kMaxSlots);
+    x_.loop_allocations.fetch_add(1, std::memory_order_relaxed);
+  }
   s->generation = generation_;
   s->frame = frame_info_->frame;
   s->time = frame_info_->time;
@@ -146,7 +150,8 @@ bool LoopSide::publish(bool new_frame) {
     s->debug_stop.swap(pending_.stop);
     s->debug_values.assign(runtime_->debug_values().begin(), runtime_->debug_values().end());
   }
-  s->parts.assign(slots_.size(), {Snapshot::kAbsent, 0});
+  s->slot_count = static_cast<std::uint32_t>(slots_.size());
+  s->copied.clear();
   if (s->copies.size() < slots_.size()) s->copies.resize(slots_.size());
   for (std::size_t word = 0; word < wanted_.size(); ++word) {
     for (std::uint64_t bits = wanted_[word]; bits; bits &= bits - 1) {
@@ -154,9 +159,12 @@ bool LoopSide::publish(bool new_frame) {
       if (i >= slots_.size()) break;
       auto& copy = s->copies[i];
       // A buffer's first use of a slot, or a re-plan changed its type: the only allocation.
-      if (!copy || copy->type() != slots_[i]->type()) copy = slots_[i]->fresh();
+      if (!copy || copy->type() != slots_[i]->type()) {
+        copy = slots_[i]->fresh();
+        x_.loop_allocations.fetch_add(1, std::memory_order_relaxed);
+      }
       slots_[i]->copy_to(*copy);
-      s->parts[i] = {0, 0};  // present; encode_copies() sets offset and size
+      s->copied.push_back(static_cast<std::uint32_t>(i));
     }
   }
   LoopMessage m;

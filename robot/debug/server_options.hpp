@@ -32,8 +32,9 @@ struct ServerStats {
   std::uint64_t rejected = 0;  // refused or dropped: limits, tokens, bad messages, timeouts
   std::uint64_t requests = 0;
   std::uint64_t samples_sent = 0;
-  std::uint64_t samples_dropped = 0;  // slow clients' lost samples (they are told)
-  std::uint64_t snapshots_lost = 0;   // frames the server thread fell behind on
+  std::uint64_t samples_dropped = 0;   // slow clients' lost samples (they are told)
+  std::uint64_t snapshots_lost = 0;    // frames the server thread fell behind on
+  std::uint64_t loop_allocations = 0;  // snapshot buffers and value copies the loop allocated
 };
 
 }  // namespace stride::debug

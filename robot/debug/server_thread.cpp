@@ -42,6 +42,7 @@ ServerStats ServerThread::stats() const {
   s.samples_sent = sent_.load();
   s.samples_dropped = dropped_.load();
   s.snapshots_lost = x_.snapshots_lost.load();
+  s.loop_allocations = x_.loop_allocations.load();
   return s;
 }
 

@@ -152,12 +152,35 @@ struct Condition {
   std::string name;
   std::vector<double> compute_us, boundary_us;
   std::int64_t frames = 0, missed = 0, blocks = 0;
+  std::uint64_t allocations = 0;  // snapshot buffers and copies the loop allocated
+  std::uint64_t interrupts = 0;   // on the loop's CPU (with --cpu), all sources
   double p99() const { return percentiles(compute_us, {0.99})[0]; }
 };
 
+// Interrupts CPU `cpu` has taken since boot, every source summed (/proc/interrupts' column).
+std::uint64_t interrupts_on(int cpu) {
+  if (cpu < 0) return 0;
+  std::ifstream in("/proc/interrupts");
+  std::string line;
+  std::getline(in, line);  // the CPU names
+  std::uint64_t sum = 0;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string name;
+    fields >> name;
+    std::uint64_t n = 0;
+    for (int i = 0; i <= cpu && fields >> n; ++i)
+      if (i == cpu) sum += n;
+  }
+  return sum;
+}
+
 // Runs the walking robot in real time for `seconds`, timing each control step and its boundary.
 void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
-               double period, double seconds, Condition& c) {
+               const debug::DebugServer& server, int cpu, double seconds, Condition& c) {
+  const double period = kPeriod;
+  const std::uint64_t allocations_before = server.stats().loop_allocations;
+  const std::uint64_t interrupts_before = interrupts_on(cpu);
   const double start = sim.time();
   const auto wall_start = Clock::now();
   sim.set_controller(0, [&](sim::SimulatedRobot&) {
@@ -177,6 +200,8 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
                                       std::chrono::duration<double>(sim.time() - start)));
   }
   ++c.blocks;
+  c.allocations += server.stats().loop_allocations - allocations_before;
+  c.interrupts += interrupts_on(cpu) - interrupts_before;
 }
 
 // The integer after "key=" in a peer's result line (0 when absent).
@@ -216,7 +241,8 @@ struct Peers {
 
 // One loaded block: the peers run `block` seconds, the loop one more so they end within it.
 void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
-                      const Options& o, const Peers& where, Condition& c, PeerTotals& totals) {
+                      const debug::DebugServer& server, const Options& o, const Peers& where,
+                      Condition& c, PeerTotals& totals) {
   std::vector<Peer> peers;
   const std::string peer_seconds = std::to_string(o.block);
   for (int i = 0; i < o.clients; ++i)
@@ -227,7 +253,7 @@ void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBounda
                              where.cpus, where.loop_cpu));
   peers.push_back(spawn_peer({"churn", where.at, peer_seconds}, (where.dir / "churn").string(),
                              where.cpus, where.loop_cpu));
-  run_block(sim, rt, boundary, kPeriod, o.block + 1.0, c);
+  run_block(sim, rt, boundary, server, o.cpu, o.block + 1.0, c);
   for (const auto& p : peers) totals.add(finish_peer(p));
 }
 
@@ -237,7 +263,8 @@ void print_condition(const Condition& c) {
   std::cout << "  " << c.name << " (" << c.blocks << " blocks): frames " << c.frames << ", missed "
             << c.missed << ", control step us p50 " << step[0] << " p99 " << step[1] << " max "
             << step[2] << "; frame boundary us p50 " << edge[0] << " p99 " << edge[1] << " max "
-            << edge[2] << "\n";
+            << edge[2] << "; loop allocations " << c.allocations
+            << ", interrupts on the loop's CPU " << c.interrupts << "\n";
 }
 
 // Prints the figures; true when every criterion holds.
@@ -312,10 +339,10 @@ int main(int argc, char** argv) {
     Condition quiet{"quiet"}, loaded{"loaded"};
     PeerTotals totals;
     const int blocks = std::max(1, static_cast<int>(std::lround(o.seconds / o.block)));
-    run_block(sim, rt, boundary, kPeriod, o.block, quiet);
+    run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
     for (int i = 0; i < blocks; ++i) {
-      run_loaded_block(sim, rt, boundary, o, where, loaded, totals);
-      run_block(sim, rt, boundary, kPeriod, o.block, quiet);
+      run_loaded_block(sim, rt, boundary, server, o, where, loaded, totals);
+      run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
     }
     rt.set_frame_boundary(nullptr);
     fs::remove_all(where.dir);
