@@ -102,14 +102,17 @@ struct Exchange {
   SpscRing<LoopMessage, 64> to_server;            // loop -> server
   SpscRing<std::unique_ptr<Snapshot>, 64> spent;  // server -> loop (buffers to reuse)
 
-  std::array<std::atomic<std::uint64_t>, kMaxSlots / 64> wanted{};  // slot bits the server needs
-  std::atomic<std::uint64_t> wanted_generation{0};                  // catalogue the bits index
-  std::atomic<bool> clients{false};                // anyone connected: snapshots are worth making
-  std::atomic<std::uint64_t> snapshots_lost{0};    // full ring: the server thread fell behind
-  std::atomic<std::uint64_t> loop_allocations{0};  // snapshot buffers and copies the loop made
-  std::atomic<std::uint64_t> frames{0};            // frames the loop has passed
-  std::atomic<double> period{0};                   // the loop's control period
-  int wake_fd = -1;  // eventfd the loop pokes after a reply (server thread owns it)
+  // Written by the server thread (seldom: when they change), read by the loop every frame.
+  alignas(64) std::array<std::atomic<std::uint64_t>, kMaxSlots / 64> wanted{};  // slot bits needed
+  std::atomic<std::uint64_t> wanted_generation{0};  // catalogue the bits index
+  std::atomic<bool> clients{false};                 // anyone connected: snapshots are worth making
+  // Written by the loop; on lines of their own, so the loop's writes every frame do not take
+  // away the server's lines above.
+  alignas(64) std::atomic<std::uint64_t> frames{0};  // frames the loop has passed
+  std::atomic<double> period{0};                     // the loop's control period
+  std::atomic<std::uint64_t> snapshots_lost{0};      // full ring: the server thread fell behind
+  std::atomic<std::uint64_t> loop_allocations{0};    // snapshot buffers and copies the loop made
+  alignas(64) int wake_fd = -1;  // eventfd the loop pokes after a reply (server thread owns it)
 };
 
 }  // namespace stride::debug

@@ -203,7 +203,7 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
   replies_.clear();
   LoopRequest in;
   while (static_cast<int>(replies_.size()) < kRequestsPerFrame &&
-         x_.to_server.size() + replies_.size() + 3 <= x_.to_server.capacity() &&
+         x_.to_server.room_at_least(replies_.size() + 3) >= replies_.size() + 3 &&
          x_.requests.try_pop(in))
     replies_.push_back(apply(rt, in));
   const bool applied = !replies_.empty();

@@ -295,7 +295,10 @@ void ServerThread::run(const std::atomic<bool>& stop) {
     publish_wanted(now);
     bool any = false;
     for (const auto& [id, c] : clients_) any |= c->state == ClientSession::State::Ready;
-    x_.clients.store(any, std::memory_order_relaxed);
+    // Stored only on a change: a store takes the line from the loop's core, which reads it each
+    // frame.
+    if (x_.clients.load(std::memory_order_relaxed) != any)
+      x_.clients.store(any, std::memory_order_relaxed);
   }
   shutdown();
 }

@@ -17,7 +17,9 @@ class SpscRing {
   // Producer thread only. On false `v` is unchanged.
   bool try_push(T& v) {
     const std::size_t head = head_.load(std::memory_order_relaxed);
-    if (head - tail_.load(std::memory_order_acquire) == N) return false;
+    // The consumer's index is read (a line from the other core) only when the ring looks full.
+    if (head - seen_tail_ == N && head - (seen_tail_ = tail_.load(std::memory_order_acquire)) == N)
+      return false;
     items_[head & (N - 1)] = std::move(v);
     head_.store(head + 1, std::memory_order_release);
     return true;
@@ -27,7 +29,9 @@ class SpscRing {
   // Consumer thread only.
   bool try_pop(T& out) {
     const std::size_t tail = tail_.load(std::memory_order_relaxed);
-    if (head_.load(std::memory_order_acquire) == tail) return false;
+    // The producer's index is read only when the items seen before are used up.
+    if (seen_head_ == tail && (seen_head_ = head_.load(std::memory_order_acquire)) == tail)
+      return false;
     out = std::move(items_[tail & (N - 1)]);
     tail_.store(tail + 1, std::memory_order_release);
     return true;
@@ -38,12 +42,21 @@ class SpscRing {
     return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
   }
   bool full() const { return size() == N; }
+  // Producer thread only: slots it can surely still fill (reads the consumer's index only when
+  // the last look found fewer than `wanted`).
+  std::size_t room_at_least(std::size_t wanted) {
+    const std::size_t head = head_.load(std::memory_order_relaxed);
+    if (N - (head - seen_tail_) < wanted) seen_tail_ = tail_.load(std::memory_order_acquire);
+    return N - (head - seen_tail_);
+  }
   static constexpr std::size_t capacity() { return N; }
 
  private:
   std::array<T, N> items_{};
   alignas(64) std::atomic<std::size_t> head_{0};  // next slot to write
+  std::size_t seen_tail_ = 0;                     // producer's last look at tail_
   alignas(64) std::atomic<std::size_t> tail_{0};  // next slot to read
+  std::size_t seen_head_ = 0;                     // consumer's last look at head_
 };
 
 }  // namespace stride::debug

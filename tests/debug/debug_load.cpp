@@ -154,11 +154,13 @@ struct Condition {
   std::int64_t frames = 0, missed = 0, blocks = 0;
   std::uint64_t allocations = 0;  // snapshot buffers and copies the loop allocated
   std::uint64_t interrupts = 0;   // on the loop's CPU (with --cpu), all sources
+  std::uint64_t shootdowns = 0;   // of them TLB shootdowns (another thread unmapped memory)
   double p99() const { return percentiles(compute_us, {0.99})[0]; }
 };
 
-// Interrupts CPU `cpu` has taken since boot, every source summed (/proc/interrupts' column).
-std::uint64_t interrupts_on(int cpu) {
+// Interrupts CPU `cpu` has taken since boot (/proc/interrupts' column): of the named source
+// ("TLB:"), or every source summed ("").
+std::uint64_t interrupts_on(int cpu, const std::string& source = "") {
   if (cpu < 0) return 0;
   std::ifstream in("/proc/interrupts");
   std::string line;
@@ -168,6 +170,7 @@ std::uint64_t interrupts_on(int cpu) {
     std::istringstream fields(line);
     std::string name;
     fields >> name;
+    if (!source.empty() && name != source) continue;
     std::uint64_t n = 0;
     for (int i = 0; i <= cpu && fields >> n; ++i)
       if (i == cpu) sum += n;
@@ -181,6 +184,7 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   const double period = kPeriod;
   const std::uint64_t allocations_before = server.stats().loop_allocations;
   const std::uint64_t interrupts_before = interrupts_on(cpu);
+  const std::uint64_t shootdowns_before = interrupts_on(cpu, "TLB:");
   const double start = sim.time();
   const auto wall_start = Clock::now();
   sim.set_controller(0, [&](sim::SimulatedRobot&) {
@@ -202,6 +206,7 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   ++c.blocks;
   c.allocations += server.stats().loop_allocations - allocations_before;
   c.interrupts += interrupts_on(cpu) - interrupts_before;
+  c.shootdowns += interrupts_on(cpu, "TLB:") - shootdowns_before;
 }
 
 // The integer after "key=" in a peer's result line (0 when absent).
@@ -264,7 +269,8 @@ void print_condition(const Condition& c) {
             << c.missed << ", control step us p50 " << step[0] << " p99 " << step[1] << " max "
             << step[2] << "; frame boundary us p50 " << edge[0] << " p99 " << edge[1] << " max "
             << edge[2] << "; loop allocations " << c.allocations
-            << ", interrupts on the loop's CPU " << c.interrupts << "\n";
+            << ", interrupts on the loop's CPU " << c.interrupts << " (TLB shootdowns "
+            << c.shootdowns << ")\n";
 }
 
 // Prints the figures; true when every criterion holds.
