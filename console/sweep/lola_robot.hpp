@@ -16,7 +16,7 @@ namespace stride::sweep {
 
 class LolaRobot {
  public:
-  // Seconds the robot process gets to connect, and to answer one frame (lockstep).
+  // Seconds the robot process gets to connect (a frame's answer: sim::kLockstepAnswerTimeout).
   static constexpr double kConnectTimeout = 30;
 
   // Writes `config` (its socket and the LoLA period set here), listens, starts the robot process
