@@ -73,7 +73,6 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
   const double step = sim.scene().physics.step;
   marks.end = static_cast<double>(std::llround(marks.absolute(spec.until) / step)) * step;
 
-  FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys);
   std::vector<WindowedStat> summaries;
   for (const SummarySpec& s : spec.record.summaries)
     summaries.emplace_back(bound_of(s.from, marks), bound_of(s.to, marks), s.to_inclusive,
@@ -90,6 +89,13 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
         trace_csv += (k ? "," : "") + spec.record.traces[i].columns[k].first;
       trace_csv += '\n';
     }
+  // A trace's keys are bound only in the runs it traces (through LoLA a controller's
+  // representation cannot be read, and an untraced run need not read it).
+  std::vector<bool> needed(c.frame_keys.size());
+  for (std::size_t k = 0; k < needed.size(); ++k) needed[k] = !c.trace_only[k];
+  if (trace)
+    for (const int k : trace->keys) needed[static_cast<std::size_t>(k)] = true;
+  FrameKeys keys(*session, walk ? &*walk : nullptr, c.frame_keys, needed);
 
   world.set_frame_observer([&](sim::SimulatedRobot& robot) {
     if (walk) walk->observe(robot);

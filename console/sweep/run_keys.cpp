@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "robot/core/error.hpp"
@@ -110,11 +111,14 @@ bool key_needs_walk_frame(const std::string& key) {
 }
 
 FrameKeys::FrameKeys(console::SimSession& session, const console::WalkFrameObserver* walk,
-                     const std::vector<std::string>& keys)
+                     const std::vector<std::string>& keys, const std::vector<bool>& needed)
     : walk_(walk), values_(keys.size(), 0.0) {
-  for (const std::string& key : keys) {
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    const std::string& key = keys[k];
     Bound b;
-    if (key.rfind("frame.", 0) == 0) {
+    if (!needed.empty() && !needed[k]) {
+      values_[k] = std::numeric_limits<double>::quiet_NaN();
+    } else if (key.rfind("frame.", 0) == 0) {
       b.frame_field = frame_field(key.substr(6));
       if (b.frame_field < 0 || !walk) throw Error("key '" + key + "' needs the walk observer");
     } else {
@@ -138,6 +142,7 @@ void FrameKeys::sample() {
   }
   for (std::size_t k = 0; k < bound_.size(); ++k) {
     const Bound& b = bound_[k];
+    if (b.frame_field < 0 && !b.reader) continue;  // not needed by this run
     values_[k] = b.frame_field >= 0 ? walk_->frame().*(frame_fields()[b.frame_field].second)
                                     : b.reader->read_encoded(*slots_[b.slot], bytes_[b.slot]);
   }

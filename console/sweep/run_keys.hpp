@@ -27,8 +27,9 @@ bool key_needs_walk_frame(const std::string& key);
 // Per-frame keys bound to robot 0 of a session; sample() reads them all after a control frame.
 class FrameKeys {
  public:
+  // Binds the keys `needed` marks (all when it is empty); the others read NaN.
   FrameKeys(console::SimSession& session, const console::WalkFrameObserver* walk,
-            const std::vector<std::string>& keys);
+            const std::vector<std::string>& keys, const std::vector<bool>& needed = {});
   void sample();
   const std::vector<Cell>& values() const { return values_; }
 

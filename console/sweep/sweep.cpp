@@ -101,13 +101,17 @@ class Compiler {
     record_.push_back({name, text});
   }
 
-  int frame_key(const std::string& key, int line) {
+  int frame_key(const std::string& key, int line, bool for_trace = false) {
     wrap(line, [&] { check_key(key, true); });
     c_.walk_frame = c_.walk_frame || key_needs_walk_frame(key);
     const auto it = std::find(c_.frame_keys.begin(), c_.frame_keys.end(), key);
-    if (it != c_.frame_keys.end()) return static_cast<int>(it - c_.frame_keys.begin());
-    c_.frame_keys.push_back(key);
-    return static_cast<int>(c_.frame_keys.size() - 1);
+    const auto k = static_cast<std::size_t>(it - c_.frame_keys.begin());
+    if (it == c_.frame_keys.end()) {
+      c_.frame_keys.push_back(key);
+      c_.trace_only.push_back(true);
+    }
+    c_.trace_only[k] = c_.trace_only[k] && for_trace;
+    return static_cast<int>(k);
   }
 
   void compile_summary(const SummarySpec& m) {
@@ -131,7 +135,7 @@ class Compiler {
     Sweep::Compiled::Trace out;
     if (!t.where.empty())
       out.where = wrap(t.line, [&] { return Expression(t.where, plan_resolver()); });
-    for (const auto& [name, key] : t.columns) out.keys.push_back(frame_key(key, t.line));
+    for (const auto& [name, key] : t.columns) out.keys.push_back(frame_key(key, t.line, true));
     c_.traces.push_back(std::move(out));
   }
 

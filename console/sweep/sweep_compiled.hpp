@@ -12,6 +12,7 @@ namespace stride::sweep {
 
 struct Sweep::Compiled {
   std::vector<std::string> frame_keys;  // per-frame keys, each once
+  std::vector<bool> trace_only;         // per frame key: read by traces alone (bound when traced)
   bool walk_frame = false;              // frame.* keys or walk marks need the WalkFrame observer
   struct Summary {
     int key = -1;  // into frame_keys

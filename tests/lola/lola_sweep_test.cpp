@@ -19,7 +19,8 @@ using test::ChildProcess;
 namespace fs = std::filesystem;
 
 // Two short walks of the Ch. 4 hip scene (0.6 s of walking), the hip gain a factor: the run's
-// setting must reach the robot process. The state hash says whether two worlds are the same.
+// setting must reach the robot process. The state hash says whether two worlds are the same. The
+// trace traces no run: its controller key (unreadable through LoLA) must not fail the runs.
 std::string tiny_sweep() {
   const std::string path = ChildProcess::scratch("lola_tiny.sweep.xml");
   std::ofstream(path)
@@ -34,6 +35,9 @@ std::string tiny_sweep() {
       << "    <value name=\"fell\" key=\"walk.fell\"/>\n"
       << "    <summary name=\"pitch\" key=\"frame.true_pitch\" stat=\"max\" "
          "from=\"walk_start\"/>\n"
+      << "    <trace where=\"kp == 9\" from=\"walk_start\">\n"
+      << "      <column name=\"fsr\" key=\"representation:FsrSensorData.total_left\"/>\n"
+      << "    </trace>\n"
       << "  </record>\n"
       << "</sweep>\n";
   return path;
