@@ -3,7 +3,7 @@
 #include <ostream>
 
 #include "robot/core/error.hpp"
-#include "robot/hal/lola/lola_protocol.hpp"
+#include "simulator/lola/lola_scene.hpp"
 
 namespace stride::cli {
 namespace {
@@ -38,19 +38,17 @@ LolaRunOptions read_lola_options(ArgumentReader& a) {
 
 sim::SceneDescription lola_scene(sim::SceneDescription scene, const LolaRunOptions& o) {
   if (!o.any()) return scene;
-  auto& r = scene.robots[lola_robot(scene, o)];
-  if (r.period == 0) r.period = hal::lola::kPeriod;
-  if (!o.socket.empty()) {
-    r.has_controller = false;  // the LoLA client controls it
-    r.controller = {};
-  } else if (!r.has_controller) {
-    throw Error("stride run: --lola-packets: robot '" + r.name + "' has no <controller>");
-  }
+  const auto robot = static_cast<std::size_t>(lola_robot(scene, o));
+  if (o.packets && !scene.robots[robot].has_controller)
+    throw Error("stride run: --lola-packets: robot '" + scene.robots[robot].name +
+                "' has no <controller>");
+  sim::prepare_lola_robot(scene, robot,
+                          o.packets ? sim::LolaController::InProcess : sim::LolaController::Client);
   return scene;
 }
 
-std::unique_ptr<sim::LolaServer> attach_lola(console::SimSession& session,
-                                             const LolaRunOptions& o, std::ostream& events) {
+std::unique_ptr<sim::LolaServer> attach_lola(console::SimSession& session, const LolaRunOptions& o,
+                                             std::ostream& events) {
   if (!o.any()) return nullptr;
   auto& sim = session.simulation();
   const int robot = lola_robot(sim.scene(), o);

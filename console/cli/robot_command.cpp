@@ -5,19 +5,17 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <ostream>
 #include <vector>
 
 #include "console/cli/subcommand.hpp"
+#include "console/system/child_process.hpp"
 #include "robot/app/robot_main.hpp"
 
 namespace stride::cli {
 
 int robot_main(Args args, std::ostream& out, std::ostream& err) {
-  std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::string robot = (self.parent_path() / "stride-robot").string();
+  const std::string robot = console::sibling_executable("stride-robot");
   std::vector<std::string> words{robot};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;

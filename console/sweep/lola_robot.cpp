@@ -33,12 +33,6 @@ std::string last_line(const std::string& path) {
 
 }  // namespace
 
-std::string robot_executable() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  return (self.parent_path() / "stride-robot").string();
-}
-
 LolaRobot::LolaRobot(RobotConfig config, const sim::SimulatedRobot& robot) : dir_(private_dir()) {
   try {
     config.lola_socket = dir_ + "/lola";
@@ -48,7 +42,7 @@ LolaRobot::LolaRobot(RobotConfig config, const sim::SimulatedRobot& robot) : dir
     write_file(dir_ + "/robot.xml", robot_config_xml(config));
     server_ = std::make_unique<sim::LolaServer>(config.lola_socket, sim::LolaPacing::Lockstep,
                                                 robot, events_);
-    const std::string exe = robot_executable();
+    const std::string exe = console::sibling_executable("stride-robot");
     if (!fs::exists(exe))
       throw Error("sweep --through-lola: " + exe +
                   " does not exist (build the stride-robot target)");

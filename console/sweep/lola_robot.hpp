@@ -43,7 +43,4 @@ class LolaRobot {
   std::unique_ptr<console::RunningChild> child_;
 };
 
-// The `stride-robot` next to this process's executable.
-std::string robot_executable();
-
 }  // namespace stride::sweep

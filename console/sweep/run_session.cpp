@@ -3,10 +3,10 @@
 #include <charconv>
 #include <filesystem>
 
-#include "console/cli/lola_run.hpp"
 #include "console/sweep/scene_edit.hpp"
 #include "console/sweep/sweep.hpp"
 #include "robot/core/error.hpp"
+#include "simulator/lola/lola_scene.hpp"
 #include "simulator/scene/start_perturbation.hpp"
 
 namespace stride::sweep {
@@ -64,12 +64,13 @@ sim::SceneDescription run_scene(const SweepSpec& spec, const RunPlan& run, Robot
     sim::apply_start(d, sim::ensemble_member(start, 0));
   }
   if (link == RobotLink::InProcess) return d;
-  // As `stride run --lola-packets` / `--lola` make it: LoLA's 12 ms unless the scene states a
-  // period; with a robot process, no controller here.
-  cli::LolaRunOptions o;
-  o.packets = link == RobotLink::Packets;
-  if (!o.packets) o.socket = "(the run's robot process)";
-  return cli::lola_scene(std::move(d), o);
+  if (d.robots.empty()) throw Error(scene + ": the scene has no robot");
+  if (link == RobotLink::Packets && !d.robots[0].has_controller)
+    throw Error(scene + ": --lola-packets: robot 0 has no <controller>");
+  sim::prepare_lola_robot(
+      d, 0,
+      link == RobotLink::Packets ? sim::LolaController::InProcess : sim::LolaController::Client);
+  return d;
 }
 
 std::unique_ptr<console::SimSession> build_run_session(const SweepSpec& spec, const RunPlan& run,

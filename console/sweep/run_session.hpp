@@ -10,7 +10,7 @@
 namespace stride::sweep {
 
 // The run's scene: its file with the run's scene edits, seed and perturbed start, robot 0 made
-// ready for `link` (cli::lola_scene: LoLA's period; through LoLA, no controller here).
+// ready for `link` (sim::prepare_lola_robot: LoLA's period; through LoLA, no controller here).
 sim::SceneDescription run_scene(const SweepSpec& spec, const RunPlan& run, RobotLink link);
 
 // The run's world with robot 0's controller in this process (directly or through LoLA's packets;

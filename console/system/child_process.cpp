@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
 #include <thread>
 
 #include "robot/core/error.hpp"
@@ -116,6 +117,12 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::string& i
   r.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   return r;
+}
+
+std::string sibling_executable(const std::string& name) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return (self.parent_path() / name).string();
 }
 
 RunningChild::RunningChild(const std::vector<std::string>& argv, const std::string& log) {

@@ -18,6 +18,10 @@ struct ChildResult {
 // argv[0] is looked up on PATH. Throws stride::Error if the program cannot be started.
 ChildResult run_child(const std::vector<std::string>& argv, const std::string& input);
 
+// The program `name` in this process's executable's folder (e.g. the `stride-robot` built next to
+// `stride`); that path whether or not the file exists.
+std::string sibling_executable(const std::string& name);
+
 // A program running beside this one, its standard output and error appended to `log`, its input
 // /dev/null. It gets SIGKILL when the thread that started it ends (a sweep worker killed mid-run
 // leaves no child behind); the destructor ends it (stop()) if it still runs.

@@ -203,8 +203,7 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
   replies_.clear();
   LoopRequest in;
   while (static_cast<int>(replies_.size()) < kRequestsPerFrame &&
-         x_.to_server.room_at_least(replies_.size() + 3) >= replies_.size() + 3 &&
-         x_.requests.try_pop(in))
+         x_.to_server.has_room(replies_.size() + 3) && x_.requests.try_pop(in))
     replies_.push_back(apply(rt, in));
   const bool applied = !replies_.empty();
   if (applied && rt.plan_generation() != plan_generation_) {

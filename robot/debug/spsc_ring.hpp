@@ -41,13 +41,12 @@ class SpscRing {
   std::size_t size() const {
     return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
   }
-  bool full() const { return size() == N; }
-  // Producer thread only: slots it can surely still fill (reads the consumer's index only when
-  // the last look found fewer than `wanted`).
-  std::size_t room_at_least(std::size_t wanted) {
+  // Producer thread only: can `n` more items surely be pushed? (Reads the consumer's index only
+  // when the last look left too little room.)
+  bool has_room(std::size_t n) {
     const std::size_t head = head_.load(std::memory_order_relaxed);
-    if (N - (head - seen_tail_) < wanted) seen_tail_ = tail_.load(std::memory_order_acquire);
-    return N - (head - seen_tail_);
+    if (N - (head - seen_tail_) < n) seen_tail_ = tail_.load(std::memory_order_acquire);
+    return N - (head - seen_tail_) >= n;
   }
   static constexpr std::size_t capacity() { return N; }
 

@@ -19,13 +19,14 @@ TEST(SpscRing, KeepsOrderAndRefusesWhenFullOrEmpty) {
   int extra = 99;
   EXPECT_FALSE(ring.try_push(extra));
   EXPECT_EQ(extra, 99);  // a refused push leaves the value with the caller
-  EXPECT_EQ(ring.room_at_least(1), 0u);
+  EXPECT_FALSE(ring.has_room(1));
   for (int i = 0; i < 2; ++i) {
     ASSERT_TRUE(ring.try_pop(out));
     EXPECT_EQ(out, i);
   }
   // The producer saw a full ring last; asked for room it looks again and finds the two freed.
-  EXPECT_EQ(ring.room_at_least(2), 2u);
+  EXPECT_TRUE(ring.has_room(2));
+  EXPECT_FALSE(ring.has_room(3));
   EXPECT_TRUE(ring.try_push(4));
   EXPECT_TRUE(ring.try_push(5));
   EXPECT_FALSE(ring.try_push(extra));
