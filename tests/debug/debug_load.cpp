@@ -1,6 +1,6 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
 //   debug_load [--seconds S] [--block B] [--clients N] [--fields F] [--scene f]
-//              [--judge all|streams] [--rt-priority 1..99] [--cpu K]
+//              [--judge all|streams] [--rt-priority 1..99] [--cpu K] [--twin on|off]
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
 // to the wall clock, its controller served by a debug server. Quiet blocks (no client) alternate
 // with loaded blocks (N clients each streaming F fields every frame while one more floods garbage
@@ -15,7 +15,11 @@
 // p99 more than 10 % over the quiet one. --rt-priority runs the loop under SCHED_FIFO, as
 // `stride robot --rt-priority` does on the NAO (the server thread and the peers stay normal);
 // --cpu gives the loop CPU K alone (the server thread and the peers run on the others), so the
-// network work of the flood, done where its sockets live, stays off the loop's CPU.
+// network work of the flood, done where its sockets live, stays off the loop's CPU. --twin on
+// adds a block after each loaded one whose peers load a twin robot's server instead (see Twin):
+// the machine as loaded, this robot with no client; the p99 bound is then judged against those
+// blocks, and the ratio to the quiet blocks is printed beside it. Each step's thread CPU time and
+// the host's steal on the loop's CPU are printed too.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -24,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -56,6 +61,7 @@ struct Options {
   bool judge_timing = true;
   int rt_priority = 0;  // 0: time-shared
   int cpu = -1;         // -1: any
+  bool twin = false;    // also load a twin robot's server (this robot then has no client)
 };
 
 Options read_options(int argc, char** argv) {
@@ -78,6 +84,8 @@ Options read_options(int argc, char** argv) {
       o.rt_priority = parse_realtime_priority(value, "debug_load: --rt-priority");
     else if (flag == "--cpu")
       o.cpu = static_cast<int>(parse_integer(value, "debug_load: --cpu", 0, 1023));
+    else if (flag == "--twin" && (value == "on" || value == "off"))
+      o.twin = value == "on";
     else
       throw Error("debug_load: unknown flag '" + flag + "'");
   }
@@ -151,6 +159,8 @@ std::vector<double> percentiles(std::vector<double> v, std::initializer_list<dou
 struct Condition {
   std::string name;
   std::vector<double> compute_us, boundary_us;
+  std::vector<double> cpu_us;  // the loop thread's CPU time in the step (the host's steal excluded)
+  std::uint64_t steal_ticks = 0;  // time the host ran something else on the loop's vCPU
   std::int64_t frames = 0, missed = 0, blocks = 0;
   std::uint64_t allocations = 0;  // snapshot buffers and copies the loop allocated
   std::uint64_t interrupts = 0;   // on the loop's CPU (with --cpu), all sources
@@ -178,6 +188,31 @@ std::uint64_t interrupts_on(int cpu, const std::string& source = "") {
   return sum;
 }
 
+// The loop thread's CPU time (with paravirtual steal accounting, without the host's steal).
+double thread_cpu_us() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e6 + static_cast<double>(t.tv_nsec) * 1e-3;
+}
+
+// Ticks of steal time on CPU `cpu` since boot (/proc/stat's eighth column).
+std::uint64_t steal_on(int cpu) {
+  if (cpu < 0) return 0;
+  std::ifstream in("/proc/stat");
+  const std::string name = "cpu" + std::to_string(cpu);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string first;
+    fields >> first;
+    if (first != name) continue;
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8 && fields >> v; ++i) {
+    }
+    return v;
+  }
+  return 0;
+}
+
 // Runs the walking robot in real time for `seconds`, timing each control step and its boundary.
 void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
                const debug::DebugServer& server, int cpu, double seconds, Condition& c) {
@@ -185,6 +220,7 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   const std::uint64_t allocations_before = server.stats().loop_allocations;
   const std::uint64_t interrupts_before = interrupts_on(cpu);
   const std::uint64_t shootdowns_before = interrupts_on(cpu, "TLB:");
+  const std::uint64_t steal_before = steal_on(cpu);
   const double start = sim.time();
   const auto wall_start = Clock::now();
   sim.set_controller(0, [&](sim::SimulatedRobot&) {
@@ -192,8 +228,10 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
     const double due = sim.time() - start;
     const double late = std::chrono::duration<double>(now - wall_start).count() - due;
     if (late > period) ++c.missed;
+    const double cpu_start = thread_cpu_us();
     rt.step();
     c.compute_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - now).count());
+    c.cpu_us.push_back(thread_cpu_us() - cpu_start);
     c.boundary_us.push_back(static_cast<double>(boundary.last_ns.load()) * 1e-3);
     ++c.frames;
   });
@@ -207,6 +245,7 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   c.allocations += server.stats().loop_allocations - allocations_before;
   c.interrupts += interrupts_on(cpu) - interrupts_before;
   c.shootdowns += interrupts_on(cpu, "TLB:") - shootdowns_before;
+  c.steal_ticks += steal_on(cpu) - steal_before;
 }
 
 // The integer after "key=" in a peer's result line (0 when absent).
@@ -244,19 +283,63 @@ struct Peers {
   fs::path dir;
 };
 
+// A twin robot in this process: the same controller with its own debug server, stepped every
+// 12 ms by a thread on the peers' CPUs for the whole run. A block whose peers load the twin's
+// server loads the machine as a loaded block does while this robot has no client: the same run
+// with no client, which tells the server's cost to the loop from the machine's.
+class Twin {
+ public:
+  Twin(const Options& o, const std::vector<int>& cpus) : session_(scene_of(o)) {
+    debug::ServerOptions options;
+    options.listen = {"127.0.0.1", 0};
+    options.robot = "twin";
+    options.max_clients = static_cast<std::size_t>(o.clients) + 8;
+    options.log = [](const std::string&) {};
+    server_ = std::make_unique<debug::DebugServer>(options);
+    session_.runtime(0)->set_frame_boundary(&server_->boundary());
+    thread_ = std::thread([this, cpus] {
+      if (!cpus.empty()) set_cpu_affinity(cpus, "debug_load: --cpu");
+      auto due = Clock::now();
+      while (!stop_) {
+        session_.runtime(0)->step();
+        due += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kPeriod));
+        std::this_thread::sleep_until(due);
+      }
+    });
+  }
+  ~Twin() {
+    stop_ = true;
+    thread_.join();
+    session_.runtime(0)->set_frame_boundary(nullptr);
+  }
+  std::string at() const { return server_->endpoint().text(); }
+
+  static sim::SceneDescription scene_of(const Options& o) {
+    sim::SceneDescription scene = sim::parse_scene_file(o.scene);
+    scene.robots.at(0).period = kPeriod;
+    return scene;
+  }
+
+ private:
+  console::SimSession session_;
+  std::unique_ptr<debug::DebugServer> server_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
 // One loaded block: the peers run `block` seconds, the loop one more so they end within it.
 void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
                       const debug::DebugServer& server, const Options& o, const Peers& where,
-                      Condition& c, PeerTotals& totals) {
+                      const std::string& at, Condition& c, PeerTotals& totals) {
   std::vector<Peer> peers;
   const std::string peer_seconds = std::to_string(o.block);
   for (int i = 0; i < o.clients; ++i)
-    peers.push_back(spawn_peer({"honest", where.at, peer_seconds, field_spec(o.fields), "1"},
+    peers.push_back(spawn_peer({"honest", at, peer_seconds, field_spec(o.fields), "1"},
                                (where.dir / ("honest" + std::to_string(i))).string(), where.cpus,
                                where.loop_cpu));
-  peers.push_back(spawn_peer({"garbage", where.at, peer_seconds}, (where.dir / "garbage").string(),
+  peers.push_back(spawn_peer({"garbage", at, peer_seconds}, (where.dir / "garbage").string(),
                              where.cpus, where.loop_cpu));
-  peers.push_back(spawn_peer({"churn", where.at, peer_seconds}, (where.dir / "churn").string(),
+  peers.push_back(spawn_peer({"churn", at, peer_seconds}, (where.dir / "churn").string(),
                              where.cpus, where.loop_cpu));
   run_block(sim, rt, boundary, server, o.cpu, o.block + 1.0, c);
   for (const auto& p : peers) totals.add(finish_peer(p));
@@ -265,17 +348,20 @@ void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBounda
 void print_condition(const Condition& c) {
   const auto step = percentiles(c.compute_us, {0.5, 0.99, 1.0});
   const auto edge = percentiles(c.boundary_us, {0.5, 0.99, 1.0});
+  const auto cpu = percentiles(c.cpu_us, {0.5, 0.99, 1.0});
   std::cout << "  " << c.name << " (" << c.blocks << " blocks): frames " << c.frames << ", missed "
             << c.missed << ", control step us p50 " << step[0] << " p99 " << step[1] << " max "
             << step[2] << "; frame boundary us p50 " << edge[0] << " p99 " << edge[1] << " max "
             << edge[2] << "; loop allocations " << c.allocations
             << ", interrupts on the loop's CPU " << c.interrupts << " (TLB shootdowns "
-            << c.shootdowns << ")\n";
+            << c.shootdowns << "), steal ticks " << c.steal_ticks << "; step CPU time us p50 "
+            << cpu[0] << " p99 " << cpu[1] << " max " << cpu[2] << "\n";
 }
 
 // Prints the figures; true when every criterion holds.
-bool report(const Options& o, const Condition& quiet, const Condition& loaded, const PeerTotals& t,
-            const debug::DebugServer& server, std::uint64_t log_lines) {
+bool report(const Options& o, const Condition& quiet, const Condition& loaded,
+            const Condition& twin, const PeerTotals& t, const debug::DebugServer& server,
+            std::uint64_t log_lines) {
   std::cout << "debug_load: " << o.clients << " clients x " << o.fields
             << " fields every 12 ms frame, + garbage flood + connect/drop loop, " << o.seconds
             << " s loaded in blocks of " << o.block << " s between quiet blocks, loop "
@@ -285,9 +371,18 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded, c
   std::cout.precision(1);
   print_condition(quiet);
   print_condition(loaded);
-  const double ratio = loaded.p99() / quiet.p99();
+  if (o.twin) print_condition(twin);
+  // With a twin, "no client" is the twin's blocks: the same load on the machine.
+  const Condition& reference = o.twin ? twin : quiet;
+  const double ratio = loaded.p99() / reference.p99();
   std::cout.precision(3);
-  std::cout << "  loaded p99 / quiet p99 = " << ratio << " (limit 1.10)\n";
+  const auto cpu_p99 = [](const Condition& c) { return percentiles(c.cpu_us, {0.99})[0]; };
+  std::cout << "  loaded p99 / quiet p99 = " << loaded.p99() / quiet.p99() << " (CPU time "
+            << cpu_p99(loaded) / cpu_p99(quiet) << ")";
+  if (o.twin)
+    std::cout << "; loaded p99 / twin-loaded p99 = " << ratio << " (CPU time "
+              << cpu_p99(loaded) / cpu_p99(twin) << ")";
+  std::cout << "; limit 1.10 on the " << (o.twin ? "second" : "first") << "\n";
   std::cout << "  honest streams: " << t.complete << " of " << t.streams << " complete, "
             << t.received << " samples received, " << t.dropped << " dropped (counted)\n"
             << "  garbage flood: " << t.flood_bytes << " bytes over " << t.flood_connections
@@ -304,7 +399,8 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded, c
   if (!streams_ok) std::cout << "FAIL: an honest stream is incomplete and not counted\n";
   if (o.judge_timing) {
     if (loaded.missed > 0) std::cout << "FAIL: missed frames under load\n";
-    if (ratio > 1.10) std::cout << "FAIL: loaded p99 more than 10 % over the quiet p99\n";
+    if (ratio > 1.10)
+      std::cout << "FAIL: loaded p99 more than 10 % over the " << reference.name << " p99\n";
     ok = ok && loaded.missed == 0 && ratio <= 1.10;
   }
   std::cout << (ok ? "PASS" : "FAIL") << std::endl;
@@ -316,9 +412,7 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded, c
 int main(int argc, char** argv) {
   try {
     const Options o = read_options(argc, argv);
-    sim::SceneDescription scene = sim::parse_scene_file(o.scene);
-    scene.robots.at(0).period = kPeriod;
-    console::SimSession session(std::move(scene));
+    console::SimSession session(Twin::scene_of(o));
     Runtime& rt = *session.runtime(0);
     debug::ServerOptions options;
     options.listen = {"127.0.0.1", 0};
@@ -333,6 +427,9 @@ int main(int argc, char** argv) {
       set_cpu_affinity(where.cpus, "debug_load: --cpu");  // the server thread inherits these
     }
     debug::DebugServer server(options);
+    // Before the loop's CPU and priority are set: the twin's threads inherit neither.
+    std::unique_ptr<Twin> other;
+    if (o.twin) other = std::make_unique<Twin>(o, where.cpus);
     if (o.cpu >= 0) set_cpu_affinity(where.loop_cpu, "debug_load: --cpu");
     test::TimedBoundary boundary(server.boundary());
     rt.set_frame_boundary(&boundary);
@@ -342,17 +439,21 @@ int main(int argc, char** argv) {
     where.dir = fs::temp_directory_path() / ("debug_load_" + std::to_string(getpid()));
     fs::create_directories(where.dir);
 
-    Condition quiet{"quiet"}, loaded{"loaded"};
+    Condition quiet{"quiet"}, loaded{"loaded"}, twin{"twin-loaded"};
     PeerTotals totals;
     const int blocks = std::max(1, static_cast<int>(std::lround(o.seconds / o.block)));
     run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
     for (int i = 0; i < blocks; ++i) {
-      run_loaded_block(sim, rt, boundary, server, o, where, loaded, totals);
+      run_loaded_block(sim, rt, boundary, server, o, where, where.at, loaded, totals);
+      run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
+      if (!other) continue;
+      run_loaded_block(sim, rt, boundary, server, o, where, other->at(), twin, totals);
       run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
     }
+    other.reset();
     rt.set_frame_boundary(nullptr);
     fs::remove_all(where.dir);
-    return report(o, quiet, loaded, totals, server, log_lines) ? 0 : 1;
+    return report(o, quiet, loaded, twin, totals, server, log_lines) ? 0 : 1;
   } catch (const Error& e) {
     std::cerr << e.what() << "\n";
     return 2;
