@@ -16,10 +16,9 @@ void write_png(const std::string& path, const RgbaImage& image) {
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = PNG_FORMAT_RGBA;
-  // Encoded in memory, so the file's writes go through the checked writer.
-  png_alloc_size_t size = 0;
-  if (!png_image_write_get_memory_size(png, size, 0, image.rgba.data(), 0, nullptr))
-    throw Error("cannot write PNG '" + path + "': " + png.message);
+  // Encoded in memory, so the file's writes go through the checked writer; into a buffer of the
+  // largest size libpng can produce, so the image is encoded once (sizing first encodes twice).
+  png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(png);
   std::string bytes(size, '\0');
   if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgba.data(), 0, nullptr))
     throw Error("cannot write PNG '" + path + "': " + png.message);
