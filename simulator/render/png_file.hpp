@@ -6,7 +6,11 @@
 
 namespace stride::render {
 
-void write_png(const std::string& path, const RgbaImage& image);
+// Fast trades file size for encoding time (a movie's frames); Small is libpng's default.
+enum class PngEncoding { Small, Fast };
+
+void write_png(const std::string& path, const RgbaImage& image,
+               PngEncoding encoding = PngEncoding::Small);
 RgbaImage read_png(const std::string& path);
 
 }  // namespace stride::render

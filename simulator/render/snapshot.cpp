@@ -112,7 +112,7 @@ void VideoRecorder::after_step(WorldRenderer& renderer, const sim::Simulation& s
       char name[32];
       std::snprintf(name, sizeof name, "frame_%06llu.png",
                     static_cast<unsigned long long>(frames_));
-      write_png((std::filesystem::path(frames_dir_) / name).string(), image);
+      write_png((std::filesystem::path(frames_dir_) / name).string(), image, PngEncoding::Fast);
     }
   } catch (...) {
     active_ = false;  // one error, not one per step

@@ -147,6 +147,8 @@ TEST(PngFile, RoundTripAndErrorsNameTheFile) {
   EXPECT_EQ(back.width, 3);
   EXPECT_EQ(back.height, 2);
   EXPECT_EQ(back.rgba, img.rgba);
+  write_png(path, img, PngEncoding::Fast);  // a movie frame's encoding: as lossless
+  EXPECT_EQ(read_png(path).rgba, img.rgba);
   EXPECT_NE(error_of([] { read_png("/nonexistent/x.png"); }).find("'/nonexistent/x.png'"),
             std::string::npos);
   EXPECT_EQ(error_of([&] { write_png("/nonexistent/dir/x.png", img); }),
