@@ -1,8 +1,8 @@
 #include "robot/model/urdf_validation.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -33,14 +33,20 @@ struct Checker {
     std::vector<double> out;
     const char* text = e->Attribute(attr);
     if (!text) return out;
-    std::istringstream in(text);
-    std::string tok;
-    while (in >> tok) {
+    // Split at whitespace by hand, without a stream per attribute (a NAO URDF has hundreds).
+    const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+    for (const char* p = text;;) {
+      while (*p && space(*p)) ++p;
+      if (!*p) break;
+      const char* token_end = p;
+      while (*token_end && !space(*token_end)) ++token_end;
+      const std::string token(p, token_end);
       char* end = nullptr;
-      const double v = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != '\0' || !std::isfinite(v))
+      const double v = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0' || !std::isfinite(v))
         fail(e, what + ": attribute '" + attr + "' = '" + text + "' (expected finite numbers)");
       out.push_back(v);
+      p = token_end;
     }
     return out;
   }

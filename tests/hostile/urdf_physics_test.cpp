@@ -34,6 +34,25 @@ TEST(HostileUrdf, TheArmItselfLoadsAndRuns) {
   EXPECT_TRUE(fs::exists(s.path("r.json")));
 }
 
+TEST(HostileUrdf, NumbersAreFiniteTokensSplitAtAnyWhitespace) {
+  Arm a;
+  a.origin = "0 0 nan";
+  expect_urdf_refused(
+      a.text(), {"r.urdf:10: joint 'j1': attribute 'xyz' = '0 0 nan' (expected finite numbers)"});
+  a.origin = "0 0 0.1x";
+  expect_urdf_refused(
+      a.text(), {"r.urdf:10: joint 'j1': attribute 'xyz' = '0 0 0.1x' (expected finite numbers)"});
+  a.origin = "0 0 0.1 0";
+  expect_urdf_refused(a.text(),
+                      {"r.urdf:10: joint 'j1' origin: attribute 'xyz'", "(expected 3 numbers)"});
+  a.origin = " 0  0 0.1 ";  // leading, doubled and trailing spaces separate numbers as one does
+  Scratch s;
+  s.write("r.urdf", a.text());
+  const std::string scene = s.write("r.xml", "<scene><robot name=\"r\" urdf=\"r.urdf\"/></scene>");
+  const auto r = run_stride({"run", scene, "--seconds", "0.01"});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+}
+
 TEST(HostileUrdf, InertiaNotPositiveDefinite) {
   Arm a;
   a.inertia = R"(ixx="0.01" iyy="0.01" izz="0.01" ixy="0.02" ixz="0" iyz="0")";
