@@ -166,6 +166,7 @@ struct Condition {
   std::uint64_t interrupts = 0;   // on the loop's CPU (with --cpu), all sources
   std::uint64_t shootdowns = 0;   // of them TLB shootdowns (another thread unmapped memory)
   double p99() const { return percentiles(compute_us, {0.99})[0]; }
+  double cpu_p99() const { return percentiles(cpu_us, {0.99})[0]; }
 };
 
 // Interrupts CPU `cpu` has taken since boot (/proc/interrupts' column): of the named source
@@ -289,7 +290,8 @@ struct Peers {
 // with no client, which tells the server's cost to the loop from the machine's.
 class Twin {
  public:
-  Twin(const Options& o, const std::vector<int>& cpus) : session_(scene_of(o)) {
+  // Made on the peers' CPUs before the loop's priority is set: its threads inherit those CPUs.
+  explicit Twin(const Options& o) : session_(scene_of(o)) {
     debug::ServerOptions options;
     options.listen = {"127.0.0.1", 0};
     options.robot = "twin";
@@ -297,8 +299,7 @@ class Twin {
     options.log = [](const std::string&) {};
     server_ = std::make_unique<debug::DebugServer>(options);
     session_.runtime(0)->set_frame_boundary(&server_->boundary());
-    thread_ = std::thread([this, cpus] {
-      if (!cpus.empty()) set_cpu_affinity(cpus, "debug_load: --cpu");
+    thread_ = std::thread([this] {
       auto due = Clock::now();
       while (!stop_) {
         session_.runtime(0)->step();
@@ -376,12 +377,11 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
   const Condition& reference = o.twin ? twin : quiet;
   const double ratio = loaded.p99() / reference.p99();
   std::cout.precision(3);
-  const auto cpu_p99 = [](const Condition& c) { return percentiles(c.cpu_us, {0.99})[0]; };
   std::cout << "  loaded p99 / quiet p99 = " << loaded.p99() / quiet.p99() << " (CPU time "
-            << cpu_p99(loaded) / cpu_p99(quiet) << ")";
+            << loaded.cpu_p99() / quiet.cpu_p99() << ")";
   if (o.twin)
     std::cout << "; loaded p99 / twin-loaded p99 = " << ratio << " (CPU time "
-              << cpu_p99(loaded) / cpu_p99(twin) << ")";
+              << loaded.cpu_p99() / twin.cpu_p99() << ")";
   std::cout << "; limit 1.10 on the " << (o.twin ? "second" : "first") << "\n";
   std::cout << "  honest streams: " << t.complete << " of " << t.streams << " complete, "
             << t.received << " samples received, " << t.dropped << " dropped (counted)\n"
@@ -429,7 +429,7 @@ int main(int argc, char** argv) {
     debug::DebugServer server(options);
     // Before the loop's CPU and priority are set: the twin's threads inherit neither.
     std::unique_ptr<Twin> other;
-    if (o.twin) other = std::make_unique<Twin>(o, where.cpus);
+    if (o.twin) other = std::make_unique<Twin>(o);
     if (o.cpu >= 0) set_cpu_affinity(where.loop_cpu, "debug_load: --cpu");
     test::TimedBoundary boundary(server.boundary());
     rt.set_frame_boundary(&boundary);
