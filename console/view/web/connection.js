@@ -1,8 +1,13 @@
 // The page's one WebSocket to the bridge (PROTOCOL.md): requests with ids, messages by type.
 
+import { authAnswer } from "./auth.js";
+
 export class Connection {
-  constructor(url) {
+  constructor(url, token) {
     this.url = url;
+    this.token = token; // from the URL fragment, or null
+    this.authExpect = null;
+    this.readOnly = false;
     this.nextId = 1;
     this.pending = new Map(); // id -> {resolve}
     this.handlers = new Map(); // message type -> [fn]
@@ -53,11 +58,34 @@ export class Connection {
       console.warn("view: a message that is not JSON", text.slice(0, 80));
       return;
     }
+    if (msg.type === "auth" || msg.type === "auth_ok") {
+      this.authenticate(msg);
+      return;
+    }
     if ((msg.type === "reply" || msg.type === "value") && this.pending.has(msg.id)) {
       this.pending.get(msg.id).resolve(msg);
       this.pending.delete(msg.id);
     }
     for (const fn of this.handlers.get(msg.type) || []) fn(msg);
+  }
+
+  // Challenge-response: prove the token, then check the bridge's proof (PROTOCOL.md).
+  authenticate(msg) {
+    if (msg.type === "auth") {
+      if (!this.token) {
+        this.setState("needs token (open the page as /#token=...)");
+        return;
+      }
+      const answer = authAnswer(this.token, msg.nonce);
+      this.authExpect = answer.expect;
+      this.send(answer.message);
+    } else if (msg.proof !== this.authExpect) {
+      this.setState("bridge failed its token proof");
+      this.ws.close();
+    } else {
+      this.readOnly = !!msg.read_only;
+      this.setState(this.readOnly ? "connected (read only)" : "connected");
+    }
   }
 
   failPending(why) {

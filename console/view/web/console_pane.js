@@ -31,22 +31,25 @@ export class ConsolePane {
     }
   }
 
-  print(text, cls) {
+  // Appends a line, or puts it after `after` (a command's output follows its command line).
+  print(text, cls, after = null) {
     const el = document.createElement("div");
     el.className = cls;
     el.textContent = text;
-    this.output.appendChild(el);
+    if (after && after.isConnected) after.after(el);
+    else this.output.appendChild(el);
     while (this.output.childElementCount > MAX_LINES) this.output.firstElementChild.remove();
     this.output.scrollTop = this.output.scrollHeight;
+    return el;
   }
 
   // Sends one console line; prints it, then its output or its error. Resolves with the reply.
   async run(line) {
-    this.print(`> ${line}`, "con-cmd");
+    let at = this.print(`> ${line}`, "con-cmd");
     const reply = await this.conn.cmd(line);
     const out = (reply.output || "").replace(/\n$/, "");
-    if (out) this.print(out, "con-out");
-    if (!reply.ok) this.print(reply.error || "failed", "con-err");
+    if (out) at = this.print(out, "con-out", at);
+    if (!reply.ok) this.print(reply.error || "failed", "con-err", at);
     return reply;
   }
 }

@@ -1,41 +1,59 @@
 // Wires the page's parts to the bridge connection and runs the draw loop.
 
+import { tokenFromFragment } from "./auth.js";
 import { Connection, bridgeUrl } from "./connection.js";
 import { ConsolePane } from "./console_pane.js";
+import { DataTree } from "./data_tree.js";
+import { DebugList } from "./debug_list.js";
+import { LogPlayer } from "./log_player.js";
+import { ModuleGraph } from "./module_graph.js";
+import { Overlays } from "./overlays.js";
+import { Picking } from "./picking.js";
+import { PlotPanel } from "./plots.js";
+import { SampleStore } from "./sample_store.js";
 import { SceneView } from "./scene_view.js";
 import { Banner, StatusBar } from "./status_bar.js";
+import { Watches } from "./watches.js";
 
 const $ = (id) => document.getElementById(id);
 
-const conn = new Connection(bridgeUrl(window.location));
+const conn = new Connection(bridgeUrl(window.location), tokenFromFragment(window.location.hash));
 const consolePane = new ConsolePane(conn, $("console-in"), $("console-out"));
 const status = new StatusBar(consolePane);
 const banner = new Banner();
 const view = new SceneView($("scene-canvas"));
+const overlays = new Overlays(view.scene);
+const picking = new Picking(view, consolePane);
+const store = new SampleStore(conn);
+const plots = new PlotPanel(store, $("plots"));
+const watches = new Watches($("watches"), store, conn);
+const tree = new DataTree({ container: $("tree"), filter: $("tree-filter"), conn, consolePane, watches, plots });
+const refreshTree = () => conn.send({ op: "tree" });
+const graph = new ModuleGraph($("module-graph"), $("providers"), consolePane, refreshTree);
+const debugList = new DebugList($("debug-list"), consolePane);
+const player = new LogPlayer(conn);
 
 // Test and bench hooks: what the page received and drew.
 const hooks = {
-  hello: null,
-  scene: null,
-  frame: null,
+  hello: null, scene: null, frame: null, tree: null,
   framesReceived: 0,
   rafTicks: 0,
   latencies: [], // ms from the bridge stepping a frame to the page drawing it
-  view,
-  conn,
-  consolePane,
+  view, conn, consolePane, store, plots, tree, player, picking, overlays,
   robotScreenBox: (i) => view.robotScreenBox(i),
 };
 window.strideView = hooks;
 
 let latestWall = null;
-conn.onState((s) => {
-  status.setConnection(s);
-  if (s === "connected") conn.send({ op: "tree" });
-});
+conn.onState((s) => status.setConnection(s));
+// Nothing is sent before hello: a bridge asking for a token closes on any other first message.
 conn.on("hello", (m) => {
   hooks.hello = m;
   status.setHello(m);
+  player.setHello(m);
+  store.mode = m.mode;
+  store.sendWatch(); // after a reconnect, the bridge forgot the list
+  refreshTree();
 });
 conn.on("scene", (m) => {
   hooks.scene = m;
@@ -45,16 +63,44 @@ conn.on("frame", (m) => {
   hooks.frame = m;
   hooks.framesReceived++;
   view.setFrame(m);
+  overlays.update(m);
   status.setFrame(m);
+  player.setFrame(m);
+  store.addFrame(m);
+  graph.setTimes(m.times);
+  if (m.log_frame !== null && m.log_frame !== undefined) plots.setCursor(m.t);
   if (typeof m.wall === "number") latestWall = m.wall;
   for (const r of m.robots || []) if (r.fell) banner.show("fall", `${r.name} fell at ${m.t.toFixed(2)} s`);
 });
+conn.on("tree", (m) => {
+  hooks.tree = m;
+  tree.setTree(m);
+  graph.setTree(m);
+  debugList.setTree(m);
+});
 conn.on("event", (m) => {
   if (m.kind !== "info") banner.show(m.kind, m.text);
+  if (m.kind === "override_swapped") refreshTree();
   consolePane.print(`[${m.kind}] ${m.text}`, m.kind === "info" ? "con-out" : "con-err");
 });
 conn.on("status", (m) => status.setDropped(m.dropped));
-conn.on("error", (m) => consolePane.print(m.error, "con-err"));
+conn.on("error", (m) => {
+  const key = store.rejectFrom(m.error);
+  if (key) {
+    plots.forget(key);
+    watches.remove(key);
+  }
+  consolePane.print(m.error, "con-err");
+});
+store.onError = (e) => consolePane.print(e, "con-err");
+
+// In a log, a click on a plot shows the log frame nearest that time.
+plots.onPointClick = (t) => {
+  const i = Math.min(store.indexAtOrAfter(t), store.t.length - 1);
+  const k = store.logFrame[i];
+  if (k !== null && k !== undefined) player.goto(k);
+  else if (hooks.hello && hooks.hello.mode === "log") player.goto(Math.round(t / (hooks.hello.period || 0.01)));
+};
 
 for (const name of ["follow", "front", "side", "top"]) {
   $(`view-${name}`).onclick = () => {
@@ -66,6 +112,29 @@ for (const name of ["follow", "front", "side", "top"]) {
   };
 }
 $("follow-toggle").onchange = (ev) => view.setFollowing(ev.target.checked);
+for (const name of ["com", "zmp", "cop", "support", "contacts", "footsteps"]) {
+  const box = $(`ov-${name}`);
+  overlays.set(name, box.checked);
+  box.onchange = () => {
+    overlays.set(name, box.checked);
+    view.dirty = true;
+  };
+}
+$("plot-add").onclick = () => plots.addPlot();
+$("plot-window").onchange = (ev) => plots.setWindow(+ev.target.value);
+$("plot-pause").onclick = () => {
+  plots.setPaused(!plots.paused);
+  $("plot-pause").classList.toggle("on", plots.paused);
+};
+$("tree-refresh").onclick = refreshTree;
+for (const tab of document.querySelectorAll(".tabs button")) {
+  tab.onclick = () => {
+    for (const t of document.querySelectorAll(".tabs button")) {
+      t.classList.toggle("on", t === tab);
+      $(t.dataset.panel).hidden = t !== tab;
+    }
+  };
+}
 
 view.afterDraw.push(() => {
   if (latestWall === null) return;
@@ -73,10 +142,15 @@ view.afterDraw.push(() => {
   if (hooks.latencies.length > 5000) hooks.latencies.splice(0, 1000);
   latestWall = null;
 });
+setInterval(() => {
+  tree.refresh(store);
+  watches.refresh();
+}, 200);
 
 function tick() {
   hooks.rafTicks++;
   view.draw();
+  plots.draw();
   requestAnimationFrame(tick);
 }
 requestAnimationFrame(tick);
