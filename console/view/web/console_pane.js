@@ -10,6 +10,7 @@ export class ConsolePane {
     this.output = output;
     this.history = [];
     this.cursor = 0;
+    this.count = 0; // commands sent: #con-<n> is the n-th, its reply line has data-for="con-<n>"
     input.addEventListener("keydown", (ev) => this.onKey(ev));
   }
 
@@ -45,11 +46,16 @@ export class ConsolePane {
 
   // Sends one console line; prints it, then its output or its error. Resolves with the reply.
   async run(line) {
-    let at = this.print(`> ${line}`, "con-cmd");
+    const cmd = this.print(`> ${line}`, "con-cmd");
+    cmd.id = `con-${++this.count}`;
     const reply = await this.conn.cmd(line);
+    let at = cmd;
     const out = (reply.output || "").replace(/\n$/, "");
     if (out) at = this.print(out, "con-out", at);
-    if (!reply.ok) this.print(reply.error || "failed", "con-err", at);
+    if (!reply.ok) at = this.print(reply.error || "failed", "con-err", at);
+    for (let el = cmd.nextElementSibling; el && el !== at.nextElementSibling; el = el.nextElementSibling)
+      el.dataset.for = cmd.id;
+    cmd.dataset.done = reply.ok ? "ok" : "error";
     return reply;
   }
 }

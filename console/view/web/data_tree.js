@@ -5,6 +5,7 @@ import { splitKey } from "./keys.js";
 
 const MAX_FLAT = 300; // rows a filter shows at most
 const MAX_FETCH = 40; // values fetched when a node opens
+const MAX_ITEMS = 256; // array elements listed
 
 // The children of a typed node: struct fields, array items.
 function children(node) {
@@ -12,15 +13,22 @@ function children(node) {
   if (!t) return [];
   if (t.kind === "struct")
     return (t.fields || []).map((f) => ({ name: f.name, key: `${node.key}.${f.name}`, type: f.type }));
-  if (t.kind === "array")
-    return Array.from({ length: t.size }, (_, i) => ({ name: `[${i}]`, key: `${node.key}[${i}]`, type: t.item }));
+  if (t.kind === "array") {
+    // Named elements (joints) are keyed by name, as the console takes them: position[LKneePitch].
+    const names = t.names || [];
+    const n = Math.min(MAX_ITEMS, names.length || t.size || 0); // a list (size null) shows whole
+    return Array.from({ length: n }, (_, i) => {
+      const id = names[i] || String(i);
+      return { name: names[i] || `[${i}]`, key: `${node.key}[${id}]`, type: t.item };
+    });
+  }
   return [];
 }
 
 function typeLabel(t) {
   if (!t) return "";
   if (t.kind === "number") return t.unit ? t.unit : "";
-  if (t.kind === "array") return `[${t.size}]`;
+  if (t.kind === "array") return `[${t.size ?? ""}]`;
   if (t.kind === "enum") return (t.names || []).join("|");
   return t.kind === "struct" ? "" : t.kind;
 }
