@@ -28,7 +28,11 @@ const store = new SampleStore(conn);
 const plots = new PlotPanel(store, $("plots"));
 const watches = new Watches($("watches"), store, conn);
 const tree = new DataTree({ container: $("tree"), filter: $("tree-filter"), conn, consolePane, watches, plots });
-const refreshTree = () => conn.send({ op: "tree" });
+let treeAskedAt = 0;
+const refreshTree = () => {
+  treeAskedAt = performance.now();
+  conn.send({ op: "tree" });
+};
 const graph = new ModuleGraph($("module-graph"), $("providers"), consolePane, refreshTree);
 const debugList = new DebugList($("debug-list"), consolePane);
 const player = new LogPlayer(conn);
@@ -56,6 +60,7 @@ conn.on("hello", (m) => {
   refreshTree();
 });
 conn.on("scene", (m) => {
+  if (hooks.scene) refreshTree(); // a load or reset: modules and providers may differ
   hooks.scene = m;
   view.setScene(m);
 });
@@ -70,6 +75,9 @@ conn.on("frame", (m) => {
   graph.setTimes(m.times);
   if (m.log_frame !== null && m.log_frame !== undefined) plots.setCursor(m.t);
   if (typeof m.wall === "number") latestWall = m.wall;
+  // Before the first control frame the blackboard is empty: ask again once there is one.
+  const empty = !hooks.tree || !(hooks.tree.representations || []).length;
+  if (empty && m.frame > 0 && performance.now() - treeAskedAt > 1000) refreshTree();
   for (const r of m.robots || []) if (r.fell) banner.show("fall", `${r.name} fell at ${m.t.toFixed(2)} s`);
 });
 conn.on("tree", (m) => {
@@ -147,10 +155,16 @@ setInterval(() => {
   watches.refresh();
 }, 200);
 
+// Time spent drawing, per part (ms, summed): where a slow page's time goes.
+hooks.drawMs = { view: 0, plots: 0 };
 function tick() {
   hooks.rafTicks++;
+  const t0 = performance.now();
   view.draw();
+  const t1 = performance.now();
   plots.draw();
+  hooks.drawMs.view += t1 - t0;
+  hooks.drawMs.plots += performance.now() - t1;
   requestAnimationFrame(tick);
 }
 requestAnimationFrame(tick);

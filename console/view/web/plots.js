@@ -5,6 +5,7 @@ import { csvHref, download, toCsv, toPng } from "./plot_export.js";
 
 const COLOURS = ["#2f6fd0", "#e0702a", "#2b9a4a", "#c0392b", "#8e44ad", "#16a0a8", "#a0782a", "#555"];
 const uPlot = window.uPlot;
+const MAX_PLOT_HZ = 20;
 
 class Plot {
   constructor(panel, id) {
@@ -170,6 +171,7 @@ export class PlotPanel {
     this.paused = false;
     this.cursorT = null; // the log frame's time in mode log
     this.drawnVersion = -1;
+    this.drawnAt = -Infinity;
     this.onPointClick = () => {};
   }
 
@@ -218,10 +220,12 @@ export class PlotPanel {
     this.drawnVersion = -1;
   }
 
-  // Called every animation frame: redraws when there is anything new and plots are not paused.
-  draw() {
-    if (this.paused || this.drawnVersion === this.store.version) return;
+  // Called every animation frame: redraws when there is anything new and plots are not paused,
+  // at most MAX_PLOT_HZ (a plot read by eye needs no more; the 3D view gets the time).
+  draw(now = performance.now()) {
+    if (this.paused || this.drawnVersion === this.store.version || now - this.drawnAt < 1000 / MAX_PLOT_HZ) return;
     this.drawnVersion = this.store.version;
+    this.drawnAt = now;
     for (const p of this.plots) p.update();
   }
 }

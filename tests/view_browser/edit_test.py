@@ -1,0 +1,56 @@
+#!/usr/bin/env python3
+"""A module parameter edited in place in the data tree reads back through the console pane's
+`get`; a bad value shows the one-line error beside the field and changes nothing."""
+import sys
+
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from view_harness import ViewProcess, check, console, main, open_page, wait_js
+
+KEY = "module:PatternWalk.start_delay"
+VALUE_SEL = f'.tree-node[data-key="{KEY}"] .tree-value'
+
+
+def edit(d, text):
+    """Clicks the value, waits for its input, types text + Enter; the set command's result."""
+    before = d.execute_script("return strideView.consolePane.count")
+    d.find_element(By.CSS_SELECTOR, VALUE_SEL).click()
+    wait_js(d, f"document.querySelector('{VALUE_SEL} input')", 10, "the edit box")
+    box = d.find_element(By.CSS_SELECTOR, f"{VALUE_SEL} input")
+    box.send_keys(Keys.CONTROL, "a")
+    box.send_keys(text, Keys.ENTER)
+    cid = f"con-{before + 1}"
+    state = wait_js(d, f"document.getElementById('{cid}') && document.getElementById('{cid}').dataset.done",
+                    15, "the set command's reply")
+    line = d.execute_script(f"return document.getElementById('{cid}').textContent")
+    wait_js(d, f"!document.querySelector('{VALUE_SEL} input')", 10, "the edit box closed")
+    return state, line
+
+
+def test(stride, d):
+    with ViewProcess(stride, ["scenes/walking/open_loop_medium.xml"]) as view:
+        open_page(d, view.url)
+        wait_js(d, "strideView.tree", 20, "the tree message")
+        d.find_element(By.ID, "tree-filter").send_keys(KEY)
+        wait_js(d, f"document.querySelector('{VALUE_SEL}')", 10, f"{KEY} in the tree")
+        _, original = console(d, f"get {KEY}")
+        state, line = edit(d, "1.75")
+        check(state == "ok", f"the edit's command failed: {line}")
+        check(line == f"> set module:PatternWalk start_delay=1.75", f"the edit sent {line!r}")
+        state, text = console(d, f"get {KEY}")
+        check(state == "ok" and text.strip() == "1.75", f"get after the edit: {state} {text!r}")
+        shown = wait_js(d, f"document.querySelector('{VALUE_SEL}').textContent.trim() === '1.75'", 10,
+                        "the tree shows the new value")
+        state, line = edit(d, "soon")
+        check(state == "error", f"a bad value was accepted: {line}")
+        err = wait_js(d, f"document.querySelector('.tree-node[data-key=\"{KEY}\"] .tree-error')"
+                         " && document.querySelector('.tree-node[data-key=\"{KEY}\"] .tree-error').textContent", 10,
+                      "the error beside the field")
+        check("\n" not in err.strip() and "start_delay" in err, f"the error is not one line naming the field: {err!r}")
+        state, text = console(d, f"get {KEY}")
+        check(text.strip() == "1.75", f"a refused edit changed the value: {text!r}")
+        print(f"start_delay {original.strip()} -> 1.75 (read back); 'soon' refused: {err}")
+
+
+if __name__ == "__main__":
+    sys.exit(main(test))

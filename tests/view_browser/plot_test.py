@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""A plot of representation:FrameInfo.time, made from the data tree's "+plot", receives samples
+while the simulation runs: every sample's value is its own control frame's time, one period
+apart; the plot's CSV export holds what it shows."""
+import sys
+
+from selenium.webdriver.common.by import By
+from view_harness import (ViewProcess, check, console, main, open_page, save_screenshot,
+                          screenshot_dir, tree_button, wait_js)
+
+KEY = "representation:FrameInfo.time"
+KNEES = ["representation:JointSensorData.position[LKneePitch]",
+         "representation:JointSensorData.position[RKneePitch]"]
+
+
+def test(stride, d):
+    with ViewProcess(stride, ["scenes/walking/open_loop_medium.xml"]) as view:
+        open_page(d, view.url)
+        wait_js(d, "strideView.tree", 20, "the tree message")
+        tree_button(d, KEY, "tree-plot")
+        wait_js(d, f"document.querySelector('#plot-1[data-keys=\"{KEY}\"]')", 5, "plot 1 with the key")
+        d.find_element(By.ID, "btn-run").click()
+        wait_js(d, "document.getElementById('st-state').dataset.running === '1'", 10, "running")
+        n = wait_js(d, "strideView.store.t.length >= 100 && strideView.store.t.length", 40,
+                    "100 samples while running")
+        period = d.execute_script("return strideView.hello.period")
+        rows = d.execute_script(f"return [strideView.store.t, strideView.store.cols.get('{KEY}')]")
+        t, v = rows
+        check(len(t) == len(v) and len(t) >= 100, f"{len(t)} times, {len(v)} values")
+        for i, (ti, vi) in enumerate(zip(t, v)):
+            check(vi is not None and abs(vi - ti) < 1e-9, f"sample {i}: FrameInfo.time {vi} at t {ti}")
+            if i:
+                check(abs(ti - t[i - 1] - period) < 1e-6, f"samples {i - 1},{i} not one period apart: {t[i - 1]}, {ti}")
+        drawn = wait_js(d, "strideView.plots.plots[0].u.data[0].length", 10, "the plot drew samples")
+        csv = d.execute_script("return strideView.plots.plots[0].csv()").splitlines()
+        check(csv[0] == f"t,{KEY}", f"CSV header {csv[0]!r}")
+        first = [float(x) for x in csv[1].split(",")]
+        check(len(csv) > 50 and abs(first[0] - first[1]) < 1e-9, f"CSV rows: {len(csv)}, first {csv[1]!r}")
+        print(f"{n} samples, period {period} s, plot drew {drawn}, CSV {len(csv) - 1} rows")
+        if screenshot_dir():
+            screenshot_mid_walk(d)
+
+
+def screenshot_mid_walk(d):
+    """The README picture: mid-walk, every overlay on, knee angles plotted."""
+    for k in KNEES:
+        tree_button(d, k, "tree-plot")
+    for box_id in ["ov-contacts", "ov-footsteps"]:
+        if not d.find_element(By.ID, box_id).is_selected():
+            d.find_element(By.ID, box_id).click()
+    wait_js(d, "strideView.frame.t > 4.5", 50, "the walk under way (t > 4.5 s)")
+    console(d, "pause")
+    save_screenshot(d, "view_walking.png")
+
+
+if __name__ == "__main__":
+    sys.exit(main(test))
