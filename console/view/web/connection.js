@@ -35,14 +35,17 @@ export class Connection {
     this.setState("connecting");
     const ws = new WebSocket(this.url);
     this.ws = ws;
+    this.final = null; // a state that retrying cannot change (a refused token)
     ws.onopen = () => {
       this.retryMs = 500;
-      this.setState("connected");
+      this.setState("open");
     };
     ws.onmessage = (ev) => this.dispatch(ev.data);
-    ws.onclose = () => {
+    ws.onclose = (ev) => {
       this.ws = null;
       this.failPending("connection closed");
+      if (ev.code === 1008 && !this.final) this.final = "refused: wrong token";
+      if (this.final) return this.setState(this.final);
       this.setState("disconnected");
       // The bridge may be restarting: try again, slower each time, up to 5 s apart.
       setTimeout(() => this.open(), this.retryMs);
@@ -62,6 +65,7 @@ export class Connection {
       this.authenticate(msg);
       return;
     }
+    if (msg.type === "hello") this.setState(this.readOnly ? "connected (read only)" : "connected");
     if ((msg.type === "reply" || msg.type === "value") && this.pending.has(msg.id)) {
       this.pending.get(msg.id).resolve(msg);
       this.pending.delete(msg.id);
@@ -73,18 +77,18 @@ export class Connection {
   authenticate(msg) {
     if (msg.type === "auth") {
       if (!this.token) {
-        this.setState("needs token (open the page as /#token=...)");
+        this.final = "needs token (open the page as /#token=...)";
+        this.ws.close();
         return;
       }
       const answer = authAnswer(this.token, msg.nonce);
       this.authExpect = answer.expect;
       this.send(answer.message);
     } else if (msg.proof !== this.authExpect) {
-      this.setState("bridge failed its token proof");
+      this.final = "refused: the bridge failed its token proof";
       this.ws.close();
     } else {
       this.readOnly = !!msg.read_only;
-      this.setState(this.readOnly ? "connected (read only)" : "connected");
     }
   }
 

@@ -73,7 +73,7 @@ export class Overlays {
   rebuildDynamic(r) {
     for (const c of [...this.dynamic.children]) {
       this.dynamic.remove(c);
-      c.traverse((o) => o.geometry && o.geometry.dispose());
+      if (c.isLineLoop) c.geometry.dispose(); // arrows share three's geometry: not theirs to free
     }
     if (this.on.support && r.support && r.support.length > 2) this.dynamic.add(loop(r.support, this.supportMat));
     if (this.on.contacts)

@@ -91,7 +91,12 @@ class Plot {
       hooks: { draw: [(u) => this.drawCursor(u)] },
     };
     this.u = new uPlot(opts, this.data(), this.body);
-    this.u.over.addEventListener("click", () => this.onClick());
+    // A click, not the end of a drag-zoom, jumps the log player.
+    this.u.over.addEventListener("mousedown", (ev) => (this.downAt = [ev.clientX, ev.clientY]));
+    this.u.over.addEventListener("click", (ev) => {
+      const [x, y] = this.downAt || [ev.clientX, ev.clientY];
+      if (Math.hypot(ev.clientX - x, ev.clientY - y) < 4) this.onClick();
+    });
   }
 
   resize() {
@@ -132,7 +137,7 @@ class Plot {
   }
 
   onClick() {
-    if (!this.u || this.u.select.width > 0 || this.u.cursor.idx === null) return;
+    if (!this.u || this.u.cursor.idx === null || this.u.cursor.idx === undefined) return;
     const t = this.u.data[0][this.u.cursor.idx];
     if (t !== undefined) this.panel.onPointClick(t);
   }
