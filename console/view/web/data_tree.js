@@ -162,6 +162,18 @@ export class DataTree {
     return row;
   }
 
+  // Values on screen again (after a step, a log frame): at most every 250 ms, the last call
+  // always served (a scrub ends on the frame it shows).
+  refetchVisible() {
+    if (this.refetchTimer) return;
+    const wait = Math.max(0, 250 - (performance.now() - (this.refetchedAt || -1e9)));
+    this.refetchTimer = setTimeout(() => {
+      this.refetchTimer = null;
+      this.refetchedAt = performance.now();
+      this.fetchValues([...this.valueEls.keys()].map((key) => ({ key, type: { kind: "number" } })));
+    }, wait);
+  }
+
   async fetchValues(nodes) {
     for (const n of nodes.filter((n) => isLeaf(n.type)).slice(0, MAX_FETCH)) {
       const v = await this.conn.get(n.key);

@@ -33,7 +33,7 @@ const refreshTree = () => {
   treeAskedAt = performance.now();
   conn.send({ op: "tree" });
 };
-const graph = new ModuleGraph($("module-graph"), $("providers"), consolePane, refreshTree);
+const graph = new ModuleGraph($("module-graph"), $("module-detail"), $("providers"), consolePane, refreshTree);
 const debugList = new DebugList($("debug-list"), consolePane);
 const player = new LogPlayer(conn);
 
@@ -49,6 +49,7 @@ const hooks = {
 window.strideView = hooks;
 
 let latestWall = null;
+let lastShown = ""; // frame/log frame the tree's values were last fetched for
 conn.onState((s) => status.setConnection(s));
 // Nothing is sent before hello: a bridge asking for a token closes on any other first message.
 conn.on("hello", (m) => {
@@ -75,6 +76,9 @@ conn.on("frame", (m) => {
   graph.setTimes(m.times);
   if (m.log_frame !== null && m.log_frame !== undefined) plots.setCursor(m.t);
   if (typeof m.wall === "number") latestWall = m.wall;
+  const shown = `${m.frame}/${m.log_frame}`;
+  if (!m.running && shown !== lastShown) tree.refetchVisible(); // a step or a log frame
+  lastShown = shown;
   // Before the first control frame the blackboard is empty: ask again once there is one.
   const empty = !hooks.tree || !(hooks.tree.representations || []).length;
   if (empty && m.frame > 0 && performance.now() - treeAskedAt > 1000) refreshTree();

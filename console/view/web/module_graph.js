@@ -34,8 +34,9 @@ function layers(modules, providerOf) {
 }
 
 export class ModuleGraph {
-  constructor(svgEl, table, consolePane, refreshTree) {
+  constructor(svgEl, detail, table, consolePane, refreshTree) {
     this.svg = svgEl;
+    this.detail = detail;
     this.table = table;
     this.consolePane = consolePane;
     this.refreshTree = refreshTree;
@@ -91,8 +92,10 @@ export class ModuleGraph {
       const ms = svg("text", { x: 4, y: 25, class: "module-ms" }, g);
       ms.textContent = m.ms != null ? `${m.ms.toFixed(3)} ms` : "";
       this.msEls.set(m.name, ms);
-      svg("title", {}, g).textContent =
-        `${m.name}\nrequires: ${(m.requires || []).join(", ") || "-"}\nprovides: ${(m.provides || []).join(", ") || "-"}`;
+      const detail = `${m.name}${on.includes(m) ? "" : " (not running)"}\nrequires: ${(m.requires || []).join(", ") || "-"}\n` +
+        `provides: ${(m.provides || []).join(", ") || "-"}`;
+      svg("title", {}, g).textContent = detail;
+      g.addEventListener("click", () => (this.detail.textContent = detail));
     }
   }
 
