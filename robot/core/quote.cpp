@@ -1,6 +1,7 @@
 #include "robot/core/quote.hpp"
 
 #include "robot/core/one_line.hpp"
+#include "robot/core/utf8.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,19 +12,23 @@ namespace {
 constexpr std::size_t kQuoteLimit = 80;        // characters quoted whole
 constexpr std::size_t kHead = 56, kTail = 16;  // kept of a longer text
 
+// Control characters and bytes that are not UTF-8 are escaped: the text stays valid UTF-8.
 void append_escaped(std::string& out, std::string_view text) {
-  for (const char c : text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
     const auto u = static_cast<unsigned char>(c);
+    const std::size_t n = u < 0x80 ? 1 : utf8_char_length(text, i);
     if (c == '\n')
       out += "\\n";
     else if (c == '\t')
       out += "\\t";
-    else if (u < 0x20 || u == 0x7f) {
+    else if (u < 0x20 || u == 0x7f || n == 0) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "\\x%02x", u);
       out += hex;
     } else
-      out += c;
+      out.append(text.substr(i, n));
+    i += n == 0 ? 1 : n;
   }
 }
 
