@@ -254,6 +254,7 @@ std::vector<std::string> Runtime::providers_available(const std::string& represe
 }
 
 void Runtime::swap_provider(const std::string& representation, const std::string& module) {
+  check_provider_choice(representation, module);  // before anything changes
   auto chosen = chosen_;
   if (module == "default") {
     auto it = config_.providers.find(representation);
@@ -265,6 +266,27 @@ void Runtime::swap_provider(const std::string& representation, const std::string
     chosen[representation] = module;
   }
   replan(chosen);
+}
+
+void Runtime::check_provider_choice(const std::string& representation,
+                                    const std::string& module) const {
+  auto names = [](const std::vector<std::string>& list) {
+    std::string out;
+    for (const auto& n : list) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
+  const std::vector<std::string> providers = providers_available(representation);
+  if (providers.empty()) {
+    std::set<std::string> known;
+    for (const auto& d : declarations_) known.insert(d.provides.begin(), d.provides.end());
+    throw Error("mr: no module provides a representation " + quote(representation) +
+                " (representations with providers: " +
+                names(std::vector<std::string>(known.begin(), known.end())) + ")");
+  }
+  if (module != "default" &&
+      std::find(providers.begin(), providers.end(), module) == providers.end())
+    throw Error("mr: " + quote(module) + " does not provide " + quote(representation) +
+                " (its providers: " + names(providers) + ")");
 }
 
 void Runtime::set_parameters(const std::string& module, std::string_view text) {

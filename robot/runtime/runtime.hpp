@@ -55,6 +55,8 @@ class Runtime {
   std::vector<std::string> providers_available(const std::string& representation) const;
   // Chooses `module` (or "default": the configured choice) for `representation` and re-plans
   // between frames; module state is kept where a module's role did not change.
+  // Throws, naming the known choices, when no module provides `representation` or `module`
+  // (unless "default") is not one of them.
   void swap_provider(const std::string& representation, const std::string& module);
 
   // Parameters as text, e.g. set_parameters("Stand", "knee_pitch=0.5 hip_pitch=-0.2").
@@ -118,6 +120,7 @@ class Runtime {
   const Slot& typed_slot(std::string_view name, std::type_index type) const;
   Slot& parameter_slot(const std::string& module);
   int debug_request_index(std::string_view name);
+  void check_provider_choice(const std::string& representation, const std::string& module) const;
   void apply_override(const std::string& representation, const std::string& text);
   void apply_overrides_of(const std::set<std::string>& representations);
   void replan(const std::map<std::string, std::string>& chosen);

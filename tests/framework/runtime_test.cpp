@@ -128,9 +128,17 @@ TEST(Runtime, ProviderSwapMidRunChangesProducerAndOrder) {
   rt.step();
   EXPECT_EQ(rt.representation<test::Doubled>().n, 6);
   EXPECT_EQ(error_of([&] { rt.swap_provider("Counter", "Stand"); }),
-            "configuration chooses 'Stand' for representation 'Counter', but 'Stand' does not "
-            "provide it");
-  EXPECT_EQ(rt.provider_of("Counter"), "CounterFromFrame");  // failed swap changes nothing
+            "mr: 'Stand' does not provide 'Counter' (its providers: CounterAfterStand, "
+            "CounterFromFrame)");
+  // An unknown representation is an error too, even with "default" (it used to pass silently).
+  const std::string unknown = error_of([&] { rt.swap_provider("NoSuchRep", "default"); });
+  EXPECT_NE(unknown.find("mr: no module provides a representation 'NoSuchRep' (representations "
+                         "with providers: "),
+            std::string::npos)
+      << unknown;
+  EXPECT_NE(unknown.find("Counter, "), std::string::npos) << unknown;
+  EXPECT_EQ(rt.provider_of("Counter"), "CounterFromFrame");  // failed swaps change nothing
+  EXPECT_EQ(rt.provider_of("NoSuchRep"), "");
 }
 
 TEST(Runtime, ConfigurationErrorsNameTheModules) {
