@@ -169,8 +169,9 @@ void RemoteTarget::set_debug_request(const std::string& name, DebugSwitch state)
 
 DebugOutput RemoteTarget::take_debug_output() {
   DebugOutput d;
+  d.lines = client_->take_notes();  // what the robot said unasked, e.g. that a log stopped
   if (!current_) return d;
-  d.lines = std::move(current_->lines);
+  d.lines.insert(d.lines.end(), current_->lines.begin(), current_->lines.end());
   d.stop = std::move(current_->stop);
   current_->lines.clear();
   current_->stop.clear();

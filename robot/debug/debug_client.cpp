@@ -9,12 +9,15 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <utility>
 
 #include "robot/debug/auth.hpp"
 
 namespace stride::debug {
 
 namespace {
+constexpr std::size_t kMaxNotes = 100;  // a robot cannot fill a client that never asks
+
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -90,9 +93,15 @@ void DebugClient::dispatch(const std::string& payload) {
   } else if (type == "reply") {
     const auto id = m->fields().unsigned_integer("id", UINT64_MAX);
     if (discard_.erase(id) == 0) replies_[id] = std::move(m);
+  } else if (type == "note") {
+    if (notes_.size() < kMaxNotes) notes_.push_back(one_line(m->fields().text("text"), 2000));
   } else if (type == "bye" || type == "denied") {
     lost("the robot said: " + one_line(m->fields().text("why"), 400));
   }  // other types: a newer robot's; ignored
+}
+
+std::vector<std::string> DebugClient::take_notes() {
+  return std::exchange(notes_, {});
 }
 
 std::unique_ptr<ServerMessage> DebugClient::next_message(double timeout) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "robot/debug/server_message.hpp"
 #include "robot/debug/socket_io.hpp"
@@ -49,6 +50,9 @@ class DebugClient {
   // Reads what has arrived and pings when due; call it while otherwise idle.
   void keep_alive();
   std::uint64_t samples_discarded() const { return discarded_; }
+  // What the robot told this client unasked since the last call (e.g. that its log stopped on a
+  // full disk), one line each, oldest first.
+  std::vector<std::string> take_notes();
 
  private:
   std::uint64_t send_request(Request& r);
@@ -71,6 +75,7 @@ class DebugClient {
   std::set<std::uint64_t> discard_;  // replies nobody waits for
   std::deque<Sample> samples_;
   std::uint64_t discarded_ = 0;
+  std::vector<std::string> notes_;  // at most kMaxNotes kept
   std::deque<std::unique_ptr<ServerMessage>> handshake_messages_;
   bool handshaking_ = true;
   double last_sent_ = 0;  // steady seconds

@@ -89,8 +89,9 @@ struct LoopReply {
 
 // Loop -> server, in one ring so that order holds: a reply always follows the snapshot that
 // shows its effect (a `get` after a `set` sees the new value).
+// A Note is no reply: reply.text tells reply.client that its log stopped by itself (a full disk).
 struct LoopMessage {
-  enum class Kind { Catalogue, Snapshot, Reply };
+  enum class Kind { Catalogue, Snapshot, Reply, Note };
   Kind kind = Kind::Reply;
   std::shared_ptr<const Catalogue> catalogue;
   std::unique_ptr<Snapshot> snapshot;

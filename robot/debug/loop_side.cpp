@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "robot/runtime/controller_keys.hpp"
+#include "robot/runtime/recorded_config.hpp"
 
 namespace stride::debug {
 
@@ -93,21 +94,21 @@ LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
         out.text = controller_value(rt, r.key);
         break;
       case Op::LogStart:
-        if (rt.logging()) throw Error("a log is already being recorded (log stop first)");
-        rt.start_log(in.path);
-        log_file_ = r.key;
-        out.text = r.key;
+        out.text = r.key;  // also on an error: the server removes the file it created
+        start_log(rt, in);
         break;
-      case Op::LogStop:
-        if (!rt.logging()) throw Error("no log is being recorded");
+      case Op::LogStop: {
+        if (!log_) throw Error("no log is being recorded");
         out.text = log_file_;
-        out.frames = rt.logged_frames();
-        rt.stop_log();
+        out.frames = log_->frames_written();
+        const auto log = std::move(log_);
         log_file_.clear();
+        log->close();
         break;
+      }
       case Op::List:
       case Op::Report:
-        out.state = std::make_shared<RobotState>(robot_state(rt, robot_, log_file_));
+        out.state = std::make_shared<RobotState>(robot_state(rt, robot_, log_file_, log_.get()));
         break;
       default:
         throw Error(std::string(op_name(r.op)) + " is not a loop request");
@@ -116,6 +117,46 @@ LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
     out.error = e.what();
   }
   return out;
+}
+
+void LoopSide::start_log(Runtime& rt, const LoopRequest& in) {
+  if (log_) throw Error("a log is already being recorded (log stop first)");
+  std::vector<std::pair<std::string, const Slot*>> slots;
+  for (const auto& name : rt.representation_names())
+    slots.emplace_back(name, &rt.representation_slot(name));
+  // As Runtime::start_log: the log says what it ran with, so that a replay builds the same.
+  log_ =
+      std::make_unique<LogWriter>(in.path, std::move(slots), config_metadata(rt.running_config()));
+  log_file_ = in.request.key;
+  log_client_ = in.client;
+}
+
+void LoopSide::write_log() {
+  try {
+    log_->write_frame();
+  } catch (const Error& e) {
+    LoopReply note;
+    note.client = log_client_;
+    note.op = Op::LogStop;
+    note.text = "log '" + log_file_ + "' stopped after " + std::to_string(log_->frames_written()) +
+                " frames: " + e.what();
+    pending_note_ = std::move(note);
+    log_.reset();  // the frames written so far stay readable
+    log_file_.clear();
+  }
+}
+
+bool LoopSide::push_note() {
+  if (!pending_note_) return false;
+  LoopMessage m;
+  m.kind = LoopMessage::Kind::Note;
+  m.reply = std::move(*pending_note_);
+  if (!x_.to_server.try_push(m)) {
+    pending_note_ = std::move(m.reply);  // the next boundary tries again
+    return false;
+  }
+  pending_note_.reset();
+  return true;
 }
 
 bool LoopSide::wanted_changed() {
@@ -197,8 +238,10 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
     x_.frames.fetch_add(1, std::memory_order_relaxed);
     x_.period.store(frame_info_->period, std::memory_order_relaxed);
     take_debug_output(rt);
+    if (log_) write_log();
   }
   bool poke = pending_catalogue_ && push_catalogue();
+  poke |= push_note();
   // Room for every reply, a catalogue and a snapshot is made sure of before a request is taken.
   replies_.clear();
   LoopRequest in;
@@ -236,7 +279,8 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
   }
 }
 
-RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file) {
+RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file,
+                       const LogWriter* log) {
   RobotState s;
   s.robot = robot;
   const auto& info = rt.representation<FrameInfo>();
@@ -256,8 +300,8 @@ RobotState robot_state(const Runtime& rt, const std::string& robot, const std::s
     s.debug_requests.push_back(name);
     s.debug_states.emplace_back(debug_switch_name(state));
   }
-  s.log_file = rt.logging() ? log_file : "";
-  s.log_frames = rt.logged_frames();
+  s.log_file = log ? log_file : "";
+  s.log_frames = log ? log->frames_written() : 0;
   return s;
 }
 

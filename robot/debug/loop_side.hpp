@@ -5,6 +5,8 @@
 // waits for the server thread.
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,9 @@ class LoopSide final : public FrameBoundary {
   bool publish(bool new_frame);
   void take_debug_output(Runtime& rt);
   bool push_catalogue();
+  void start_log(Runtime& rt, const LoopRequest& in);
+  void write_log();
+  bool push_note();
 
   Exchange& x_;
   std::string robot_;
@@ -53,16 +58,23 @@ class LoopSide final : public FrameBoundary {
   std::vector<const Slot*> slots_;
   const FrameInfo* frame_info_ = nullptr;
   std::array<std::uint64_t, kMaxSlots / 64> wanted_{};  // bits of the last published snapshot
+  // The log a client started (log_start): the debug server's own, so that its failure (a full
+  // disk) stops that log and tells that client, and never leaves the runtime's step.
+  std::unique_ptr<LogWriter> log_;
   std::string log_file_;
-  std::vector<LoopReply> replies_;  // of this boundary, sent after its snapshot
-  DebugText pending_;               // to go with the next snapshot streamed
+  std::uint64_t log_client_ = 0;
+  std::optional<LoopReply> pending_note_;  // why the log stopped, not yet taken by the ring
+  std::vector<LoopReply> replies_;         // of this boundary, sent after its snapshot
+  DebugText pending_;                      // to go with the next snapshot streamed
   std::uint64_t pending_dropped_ = 0;
   bool keep_ = false;
   DebugText kept_;
   std::uint64_t kept_dropped_ = 0;
 };
 
-// Everything `list` and `report` show, read from the runtime between frames.
-RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file);
+// Everything `list` and `report` show, read from the runtime between frames; `log` is the one
+// being recorded for a client (or null).
+RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file,
+                       const LogWriter* log);
 
 }  // namespace stride::debug

@@ -6,6 +6,8 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/msgpack_type_name.hpp"
+#include "robot/core/one_line.hpp"
+#include "robot/core/utf8.hpp"
 
 namespace stride::debug {
 
@@ -54,7 +56,15 @@ void MapView::wrong(std::string_view key, const char* expected, const msgpack::o
 std::string MapView::text(std::string_view key) const {
   const auto& o = need(key);
   if (o.type != msgpack::type::STR) wrong(key, "a string", o);
-  return std::string(o.via.str.ptr, o.via.str.size);
+  return utf8_of(key, o);
+}
+
+std::string MapView::utf8_of(std::string_view key, const msgpack::object& o) const {
+  std::string s(o.via.str.ptr, o.via.str.size);
+  if (!valid_utf8(s))
+    throw Error(what_ + ": field '" + std::string(key) + "': expected UTF-8 text, got '" +
+                one_line(s, 60) + "'");
+  return s;
 }
 
 std::string MapView::text_or(std::string_view key, std::string fallback) const {
@@ -128,7 +138,7 @@ std::vector<std::string> MapView::texts(std::string_view key) const {
   std::vector<std::string> out;
   each_item(o, [&](const msgpack::object& e) {
     if (e.type != msgpack::type::STR) wrong(key, "an array of strings", e);
-    out.emplace_back(e.via.str.ptr, e.via.str.size);
+    out.push_back(utf8_of(key, e));
   });
   return out;
 }
@@ -176,7 +186,7 @@ std::vector<std::vector<std::string>> MapView::text_lists(std::string_view key) 
     auto& row = out.emplace_back();
     each_item(list, [&](const msgpack::object& e) {
       if (e.type != msgpack::type::STR) wrong(key, "an array of string arrays", e);
-      row.emplace_back(e.via.str.ptr, e.via.str.size);
+      row.push_back(utf8_of(key, e));
     });
   });
   return out;
@@ -191,14 +201,18 @@ std::string MapWriter::finish() const {
 
 void MapWriter::key(std::string_view k) {
   ++entries_;
-  packer_.pack_str(static_cast<std::uint32_t>(k.size()));
-  packer_.pack_str_body(k.data(), static_cast<std::uint32_t>(k.size()));
+  str(k);
+}
+
+void MapWriter::str(std::string_view v) {
+  if (!valid_utf8(v)) return str(utf8_escaped(v));  // a peer's bytes, echoed: escaped
+  packer_.pack_str(static_cast<std::uint32_t>(v.size()));
+  packer_.pack_str_body(v.data(), static_cast<std::uint32_t>(v.size()));
 }
 
 MapWriter& MapWriter::text(std::string_view k, std::string_view v) {
   key(k);
-  packer_.pack_str(static_cast<std::uint32_t>(v.size()));
-  packer_.pack_str_body(v.data(), static_cast<std::uint32_t>(v.size()));
+  str(v);
   return *this;
 }
 
@@ -236,10 +250,7 @@ MapWriter& MapWriter::boolean(std::string_view k, bool v) {
 MapWriter& MapWriter::texts(std::string_view k, const std::vector<std::string>& values) {
   key(k);
   packer_.pack_array(static_cast<std::uint32_t>(values.size()));
-  for (const auto& v : values) {
-    packer_.pack_str(static_cast<std::uint32_t>(v.size()));
-    packer_.pack_str_body(v.data(), static_cast<std::uint32_t>(v.size()));
-  }
+  for (const auto& v : values) str(v);
   return *this;
 }
 
@@ -273,10 +284,7 @@ MapWriter& MapWriter::text_lists(std::string_view k,
   packer_.pack_array(static_cast<std::uint32_t>(values.size()));
   for (const auto& row : values) {
     packer_.pack_array(static_cast<std::uint32_t>(row.size()));
-    for (const auto& v : row) {
-      packer_.pack_str(static_cast<std::uint32_t>(v.size()));
-      packer_.pack_str_body(v.data(), static_cast<std::uint32_t>(v.size()));
-    }
+    for (const auto& v : row) str(v);
   }
   return *this;
 }

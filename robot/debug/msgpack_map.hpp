@@ -1,6 +1,7 @@
 #pragma once
 // msgpack for the debug protocol: every message is one map with string keys. MapView reads a
-// decoded map with one-line errors naming the field; MapWriter packs one. Unknown keys are
+// decoded map with one-line errors naming the field (a str that is not UTF-8 is such an error);
+// MapWriter packs one, its strs always UTF-8. Unknown keys are
 // ignored, so consoles and robots of other revisions can add fields.
 #include <cstdint>
 #include <string>
@@ -44,6 +45,7 @@ class MapView {
  private:
   const msgpack::object* find(std::string_view key) const;
   const msgpack::object& need(std::string_view key) const;
+  std::string utf8_of(std::string_view key, const msgpack::object& str) const;  // or throws
   [[noreturn]] void wrong(std::string_view key, const char* expected,
                           const msgpack::object& got) const;
   const msgpack::object& map_;
@@ -75,6 +77,7 @@ class MapWriter {
     void write(const char* p, std::size_t n) { s.append(p, n); }
   };
   void key(std::string_view k);
+  void str(std::string_view v);  // always UTF-8: bytes that are not are escaped
   std::string body_;
   std::uint32_t entries_ = 0;
   Sink sink_;

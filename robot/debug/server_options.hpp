@@ -16,8 +16,13 @@ struct ServerOptions {
   std::string log_dir = ".";       // where clients' `log start` writes and `log save` reads
   std::string robot;               // the name clients see
   bool keep_debug_output = false;  // the loop's own console shows debug output too (`serve`)
-  std::size_t max_clients = 16;
-  double handshake_timeout = 5;  // s from accept to welcome
+  std::size_t max_clients = 16;    // authenticated (admitted) clients
+  // Connections not yet authenticated have slots of their own, so that peers which never log in
+  // cannot keep a team's console out: at most this many in all and from one address; a new one
+  // beyond either closes the oldest (of that address, or of the address with the most).
+  std::size_t max_pending = 32;
+  std::size_t max_pending_per_address = 8;
+  double handshake_timeout = 2;  // s from accept to welcome
   double idle_timeout = 60;      // s without a message from a client (clients ping every 10 s)
   double request_rate = 500;     // requests per second per client, as a burst of as many
   std::size_t stream_queue = 256 * 1024;      // bytes queued to a client before samples drop

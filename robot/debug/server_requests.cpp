@@ -3,6 +3,7 @@
 // streams it sends after every frame.
 #include <algorithm>
 
+#include "robot/core/one_line.hpp"
 #include "robot/debug/msgpack_map.hpp"
 #include "robot/debug/robot_report.hpp"
 #include "robot/debug/server_thread.hpp"
@@ -88,20 +89,22 @@ void ServerThread::on_request(ClientSession& c, Request& r, Clock::time_point no
 }
 
 void ServerThread::to_loop(ClientSession& c, Request& r) {
-  LoopRequest in;
-  in.client = c.id;
-  try {
-    if (r.op == Op::LogStart) in.path = logs_.path_of(r.key);
-  } catch (const Error& e) {
-    return send(c, encode_error_reply(r.id, e.what()));
-  }
   if (c.in_flight >= kMaxInFlight)
     return send(c, encode_error_reply(r.id, "more than " + std::to_string(kMaxInFlight) +
                                                 " requests waiting for the robot's loop: refused"));
+  LoopRequest in;
+  in.client = c.id;
+  try {
+    if (r.op == Op::LogStart) in.path = logs_.create(r.key);  // a new file, or an error
+  } catch (const Error& e) {
+    return send(c, encode_error_reply(r.id, e.what()));
+  }
   const std::uint64_t id = r.id;
   in.request = std::move(r);
-  if (!x_.requests.try_push(in))
+  if (!x_.requests.try_push(in)) {
+    if (in.request.op == Op::LogStart) logs_.discard(in.request.key);
     return send(c, encode_error_reply(id, "the robot's loop is busy: request refused"));
+  }
   ++c.in_flight;
 }
 
@@ -187,6 +190,9 @@ void ServerThread::take_from_loop() {
       case LoopMessage::Kind::Reply:
         on_loop_reply(m.reply);
         break;
+      case LoopMessage::Kind::Note:
+        on_note(m.reply);
+        break;
     }
   }
 }
@@ -199,7 +205,17 @@ void ServerThread::on_catalogue(std::shared_ptr<const Catalogue> c) {
     if (client->sub) rebind_keys(client->sub->keys, *catalogue_);
 }
 
+void ServerThread::on_note(const LoopReply& r) {
+  options_.log("debug server: " + one_line(r.text, 400));  // never lost to the line budget
+  if (ClientSession* c = find(r.client)) {
+    MapWriter w;
+    w.text("t", "note").text("text", one_line(r.text, 2000));
+    send(*c, w.finish());
+  }
+}
+
 void ServerThread::on_loop_reply(LoopReply& r) {
+  if (r.op == Op::LogStart && !r.error.empty()) logs_.discard(r.text);  // created for it, empty
   auto it = clients_.find(r.client);
   if (it != clients_.end()) --it->second->in_flight;
   ClientSession* c = find(r.client);

@@ -18,6 +18,8 @@ constexpr std::size_t kReadChunk = 64 * 1024;  // per client per wake: a flood c
 constexpr auto kCloseGrace = std::chrono::milliseconds(500);
 constexpr auto kLogWindow = std::chrono::seconds(10);
 constexpr int kLogLinesPerWindow = 20;
+constexpr int kAcceptsPerWake = 8;
+constexpr std::size_t kMaxClosing = 64;  // sessions saying goodbye (their last bytes) at a time
 
 double seconds(Clock::duration d) {
   return std::chrono::duration<double>(d).count();
@@ -74,17 +76,60 @@ bool ServerThread::send_sample(ClientSession& c, const std::string& payload) {
   return true;
 }
 
+void ServerThread::evict(ClientSession& c, const std::string& why, Clock::time_point now) {
+  rejected_.fetch_add(1);
+  log("rejected " + c.address + ": " + why, now);
+  c.fd.reset();  // at once: its slot is wanted now
+  c.state = ClientSession::State::Closing;
+}
+
+void ServerThread::make_pending_room(std::uint32_t peer, Clock::time_point now) {
+  // What pending peers sent is read first: an authentication that arrived is admitted and a peer
+  // that closed is dropped, so only those still silent compete for the slots.
+  for (auto& [id, c] : clients_)
+    if (c->fd && c->state == ClientSession::State::Greeting) read_client(*c, now);
+  std::map<std::uint32_t, std::vector<ClientSession*>> pending;  // per address, oldest first
+  std::size_t all = 0;
+  for (auto& [id, c] : clients_)
+    if (c->fd && c->state == ClientSession::State::Greeting) {
+      pending[c->peer].push_back(c.get());
+      ++all;
+    }
+  const std::vector<ClientSession*>* from = nullptr;
+  if (pending[peer].size() >= options_.max_pending_per_address)
+    from = &pending[peer];
+  else if (all >= options_.max_pending)
+    for (const auto& [address, list] : pending)
+      if (!from || list.size() > from->size()) from = &list;
+  if (from && !from->empty())
+    evict(*from->front(),
+          "no authentication yet while the pre-authentication slots (" +
+              std::to_string(options_.max_pending) + ", " +
+              std::to_string(options_.max_pending_per_address) +
+              " per address) were wanted by a newer connection",
+          now);
+}
+
 void ServerThread::accept_clients(Clock::time_point now) {
-  for (;;) {
+  const bool auth = !options_.tokens.empty();
+  // A few per wake: the clients already connected are read between batches of new ones, so a
+  // storm of connections does not starve them.
+  for (int taken = 0; taken < kAcceptsPerWake; ++taken) {
     sockaddr_in peer{};
     socklen_t n = sizeof peer;
     Fd fd(::accept4(listener_.get(), reinterpret_cast<sockaddr*>(&peer), &n,
                     SOCK_NONBLOCK | SOCK_CLOEXEC));
     if (!fd) return;  // EAGAIN, or a transient error: the next wake retries
     accepted_.fetch_add(1);
+    if (clients_.size() >= options_.max_clients + options_.max_pending + kMaxClosing) {
+      rejected_.fetch_add(1);  // closed without a word: those before are still being closed
+      continue;
+    }
+    if (auth) make_pending_room(peer.sin_addr.s_addr, now);
     auto c = std::make_unique<ClientSession>();
     c->id = next_id_++;
     c->fd = std::move(fd);
+    c->peer = peer.sin_addr.s_addr;
     c->address = address_text(peer);
     c->last_heard = c->bucket_time = now;
     c->bucket = options_.request_rate;
@@ -95,18 +140,22 @@ void ServerThread::accept_clients(Clock::time_point now) {
     ::setsockopt(c->fd.get(), SOL_SOCKET, SO_KEEPALIVE, &one, sizeof one);
     ClientSession& ref = *c;
     clients_.emplace(c->id, std::move(c));
-    if (clients_.size() > options_.max_clients) {
-      reject(ref, "too many clients (limit " + std::to_string(options_.max_clients) + ")", now);
+    if (!auth && admitted_now_.load() >= options_.max_clients) {
+      reject(ref, too_many(), now);
       continue;
     }
-    const bool auth = !options_.tokens.empty();
     ref.nonce = random_nonce();
     send(ref, encode_hello({kProtocolVersion, options_.robot, auth, auth ? ref.nonce : ""}));
     if (!auth) admit(ref, false, "");
   }
 }
 
+std::string ServerThread::too_many() const {
+  return "too many clients (limit " + std::to_string(options_.max_clients) + ")";
+}
+
 void ServerThread::admit(ClientSession& c, bool read_only, const std::string& proof) {
+  if (admitted_now_.load() >= options_.max_clients) return reject(c, too_many(), Clock::now());
   c.state = ClientSession::State::Ready;
   c.read_only = read_only;
   Welcome w;

@@ -42,6 +42,7 @@ struct ClientSession {
   std::uint64_t id = 0;
   Fd fd;
   std::string address;
+  std::uint32_t peer = 0;  // IPv4 address, network order: pending slots are counted per address
   State state = State::Greeting;
   std::string nonce;  // ours, for its proof
   bool read_only = false;
@@ -74,12 +75,15 @@ class ServerThread {
 
   // server_thread.cpp: connections
   void accept_clients(Clock::time_point now);
+  void make_pending_room(std::uint32_t peer, Clock::time_point now);
+  void evict(ClientSession& c, const std::string& why, Clock::time_point now);
   void read_client(ClientSession& c, Clock::time_point now);
   void write_client(ClientSession& c);
   void check_timeouts(ClientSession& c, Clock::time_point now);
   void on_message(ClientSession& c, const std::string& payload, Clock::time_point now);
   void on_auth(ClientSession& c, const AuthMessage& a, Clock::time_point now);
   void admit(ClientSession& c, bool read_only, const std::string& proof);
+  std::string too_many() const;
   void reject(ClientSession& c, const std::string& why, Clock::time_point now);
   void say_goodbye(ClientSession& c, const std::string& why, Clock::time_point now);
   void drop(ClientSession& c, const std::string& why);
@@ -99,6 +103,7 @@ class ServerThread {
   void on_catalogue(std::shared_ptr<const Catalogue> c);
   void on_snapshot(std::unique_ptr<Snapshot> s);
   void on_loop_reply(LoopReply& r);
+  void on_note(const LoopReply& r);  // a client's log stopped by itself
   void stream(Snapshot& s);
   void hold_debug_output(Subscription& sub, const Snapshot& s);
   void fill_debug_output(Sample& sample, Subscription& sub, const Snapshot& s);

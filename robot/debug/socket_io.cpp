@@ -100,7 +100,7 @@ Fd listen_tcp(const Endpoint& at, Endpoint& bound) {
   ::setsockopt(fd.get(), SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
   if (::bind(fd.get(), reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0)
     throw Error("cannot listen on " + at.text() + ": " + std::strerror(errno));
-  if (::listen(fd.get(), 16) != 0)
+  if (::listen(fd.get(), 128) != 0)  // room for a burst of connections between wakes
     throw Error("cannot listen on " + at.text() + ": " + std::strerror(errno));
   set_nonblocking(fd.get());
   sockaddr_in b{};

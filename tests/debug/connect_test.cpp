@@ -7,30 +7,19 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/debug/served_process.hpp"
 #include "tests/lola/lola_test_support.hpp"
 
 namespace stride {
 namespace {
 
 using test::ChildProcess;
+using test::fresh_dir;
+using test::served_endpoint;
 
 const std::string kStandScene = STRIDE_SOURCE_DIR "/scenes/nao_stand_controlled.xml";
 const std::string kScript = STRIDE_SOURCE_DIR "/tests/debug/scripts/stand_remote.con";
 const std::string kFailing = STRIDE_SOURCE_DIR "/tests/debug/scripts/stand_remote_fails.con";
-
-// The endpoint a server printed ("debug server on 127.0.0.1:P"), waiting for it (bounded).
-std::string served_endpoint(const ChildProcess& server, bool on_stderr) {
-  const std::string marker = "debug server on ";
-  for (int i = 0; i < 6000; ++i) {
-    const std::string text = on_stderr ? server.err() : server.out();
-    if (const auto at = text.find(marker); at != std::string::npos) {
-      const auto begin = at + marker.size();
-      return text.substr(begin, text.find_first_of(" \n", begin) - begin);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return "";
-}
 
 // The script's output without the lines that depend on where and when it ran: the greeting
 // (loaded/connected), watch lines, the time a wait was reached, how a log was saved (copied or
@@ -51,14 +40,6 @@ struct ScriptRun {
   int code = -1;
   std::string out, err;
 };
-
-// A directory of its own under the test's scratch directory, for a process to start in.
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = ChildProcess::scratch(name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // Runs in a fresh directory named `name`, where the script's logs go.
 ScriptRun run_script(const std::vector<std::string>& argv, const std::string& name) {

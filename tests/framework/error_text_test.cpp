@@ -6,7 +6,9 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
+#include "robot/core/one_line.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/core/utf8.hpp"
 #include "robot/framework/enum_names.hpp"
 #include "robot/framework/reflect.hpp"
 #include "tests/error_text.hpp"
@@ -43,6 +45,34 @@ TEST(Quote, NeverCutsInsideAUtf8Character) {
   expected += "...";
   for (int i = 0; i < 8; ++i) expected += "\xc3\xa4";
   EXPECT_EQ(q, expected + "' (120 characters)");
+}
+
+TEST(Quote, BytesThatAreNotUtf8AreEscapedSoTheMessageIsUtf8) {
+  // A lone byte, a cut sequence, an overlong '/', a surrogate, a code point above U+10FFFF.
+  EXPECT_EQ(one_line("a\xff"
+                     "b\xc3"
+                     "c\xc0\xaf"
+                     "d\xed\xa0\x80"
+                     "e\xf4\x90\x80\x80"),
+            "a\\xffb\\xc3c\\xc0\\xafd\\xed\\xa0\\x80e\\xf4\\x90\\x80\\x80");
+  EXPECT_EQ(quote("\xc3\xa4\xe2\x82\xac\xf0\x9f\x98\x80"),
+            "'\xc3\xa4\xe2\x82\xac\xf0\x9f\x98\x80'");
+  EXPECT_EQ(utf8_escaped("ok\n\xfe"), "ok\n\\xfe");  // control characters kept, for texts
+}
+
+TEST(Utf8, WellFormedAsRfc3629Says) {
+  for (const std::string good :
+       {"", "plain", "\xc2\x80", "\xdf\xbf", "\xe0\xa0\x80", "\xed\x9f\xbf", "\xef\xbf\xbf",
+        "\xf0\x90\x80\x80", "\xf4\x8f\xbf\xbf"})
+    EXPECT_TRUE(valid_utf8(good)) << one_line(good);
+  for (const std::string bad :
+       {"\x80", "\xc1\xbf", "\xc2", "\xe0\x9f\xbf", "\xed\xa0\x80", "\xf0\x8f\xbf\xbf",
+        "\xf4\x90\x80\x80", "\xf5\x80\x80\x80", "\xe2\x82", "a\xff" "b"})
+    EXPECT_FALSE(valid_utf8(bad)) << one_line(bad);
+  EXPECT_EQ(utf8_char_length("\xe2\x82\xac!", 0), 3u);
+  EXPECT_EQ(utf8_char_length("\xe2\x82\xac!", 3), 1u);
+  EXPECT_EQ(utf8_char_length("\xe2\x82\xac!", 1), 0u);  // inside a character
+  EXPECT_EQ(utf8_char_length("x", 1), 0u);              // past the end
 }
 
 TEST(NumberText, OneReaderOneMessage) {

@@ -1,12 +1,14 @@
 // The debug protocol's decoders under hostile input, in every (sanitized) test run: the committed
 // corpus (every message kind, framing edge cases, type descriptions with values) plus
-// deterministic mutations of it must decode or fail with one stride::Error line.
+// deterministic mutations of it must decode or fail with one stride::Error line, in UTF-8.
 #include <random>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "robot/core/one_line.hpp"
+#include "robot/core/utf8.hpp"
 #include "tests/fuzz_debug/debug_fuzz_target.hpp"
 #include "tests/fuzz_support/corpus.hpp"
 #include "tests/fuzz_support/mutation.hpp"
@@ -37,6 +39,7 @@ TEST(DebugProtocolFuzz, CorpusAndMutationsDecodeOrFailWithOneLine) {
     for (const auto& m : messages) {
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
       EXPECT_FALSE(m.empty());
+      EXPECT_TRUE(valid_utf8(m)) << one_line(m, 400);  // the peer's bad bytes escaped
     }
     errors += messages.size();
   }
