@@ -36,8 +36,9 @@ RobotProcess::RobotProcess(RobotConfig config, const ModuleRegistry& registry, s
   } catch (const Error& e) {
     throw Error(config_.file + ": <model>: " + e.what());
   }
+  // A robot with motors holds a failing module's frame and goes on when its disk fills.
   RuntimeConfig rc{config_.controller.providers, config_.controller.parameters, model,
-                   ModuleErrorPolicy::Hold};
+                   ModuleErrorPolicy::Hold, LogErrorPolicy::StopLogging};
   link_ =
       hal::lola::LolaLink::connect(config_.lola_socket, config_.period, config_.connect_timeout);
   try {
@@ -65,6 +66,11 @@ void RobotProcess::report_frame_events() {
       ++errors_unreported_;
     }
   }
+  if (!runtime_->log_stopped().empty() && !log_stop_reported_) {
+    events_ << "stride robot: frame " << frames_ << ": logging stopped: " << runtime_->log_stopped()
+            << " (the control loop goes on)" << std::endl;
+    log_stop_reported_ = true;
+  }
   const auto& faults = runtime_->module_faults();
   for (; faults_reported_ < faults.size(); ++faults_reported_)
     events_ << "stride robot: frame " << faults[faults_reported_].frame << ": module '"
@@ -81,8 +87,9 @@ bool RobotProcess::link_down(double& lost_for) {
     lost_at_ = Clock::now() -
                std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(silent));
     events_ << "stride robot: frame " << frames_ << ": LoLA link "
-            << (link_->state() == hal::lola::LolaLink::State::Closed ? "lost (socket closed)"
-                                                                     : "silent")
+            << (link_->state() == hal::lola::LolaLink::State::Closed
+                    ? "lost (" + link_->closed_because() + ")"
+                    : std::string("silent"))
             << ", last packet " << ms(silent) << " ago: holding the last command; exiting if it is "
             << "not back within " << config_.link_timeout << " s" << std::endl;
   }
@@ -107,6 +114,7 @@ int RobotProcess::run(const std::function<bool()>& stop_requested) {
                        hal::lola::lola_frame_time(link_->stats().packets, config_.period));
     if (runtime_->step()) {
       ++frames_;
+      if (runtime_->logging()) log_frames_ = runtime_->logged_frames();
       if (lost_) {
         events_ << "stride robot: frame " << frames_ << ": LoLA link back after "
                 << ms(seconds_since(lost_at_)) << std::endl;
@@ -133,7 +141,8 @@ std::string RobotProcess::summary() const {
   std::ostringstream o;
   o << "frames " << frames_ << "  LoLA packets " << l.packets << " (bad " << l.bad_packets
     << ", stale skipped " << l.stale_skipped << ")  stalls " << l.stalls << "  reconnects "
-    << l.reconnects << "  torque refused " << l.torque_refused << "\n";
+    << l.reconnects << "  torque refused " << l.torque_refused << "  unsent answers "
+    << l.unsent_answers << "\n";
   o << "safety: positions clamped " << s.clamped_positions << "  stiffness clamped "
     << s.clamped_stiffness << "  non-finite held " << s.nonfinite_held << "  held frames "
     << s.held_frames << "  module errors " << s.module_errors << "\n";
@@ -141,6 +150,8 @@ std::string RobotProcess::summary() const {
     o << "module '" << f.module << "' failed in " << f.count << " frames, first at frame "
       << f.frame << ": " << f.message << "\n";
   if (!l.first_error.empty()) o << "first link error: " << l.first_error << "\n";
+  if (!runtime_->log_stopped().empty())
+    o << "log: stopped after " << log_frames_ << " frames: " << runtime_->log_stopped() << "\n";
   // The walking modules' count of leg IK solutions beyond the joint limits, when one runs.
   const auto names = runtime_->representation_names();
   if (std::find(names.begin(), names.end(), "WalkingJointRequest") != names.end())

@@ -4,6 +4,8 @@
 //   LoLA packet -> Runtime (modules; a failing one holds the frame) -> CommandGuard -> LoLA answer
 // The link lost (socket closed or no packet for two periods): the last command stays, the loss is
 // reported at once, and after the configured timeout without the link the run ends (exit code 2).
+// A peer that stops reading is a lost link (every answer has a one-period deadline); a log write
+// that fails (a full disk) ends the log with one line and the loop goes on.
 #include <functional>
 #include <iosfwd>
 #include <memory>
@@ -55,6 +57,8 @@ class RobotProcess {
   std::chrono::steady_clock::time_point lost_at_;
   std::chrono::steady_clock::time_point last_error_line_{};
   std::int64_t errors_unreported_ = 0;
+  bool log_stop_reported_ = false;
+  std::size_t log_frames_ = 0;  // frames in the log, kept after it stopped by itself
 };
 
 }  // namespace stride

@@ -1,5 +1,6 @@
 #include "robot/hal/unix_socket.hpp"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -25,13 +26,23 @@ sockaddr_un address(const std::string& path) {
 }
 
 int milliseconds_until(Deadline deadline) {
-  const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline -
-                                                                  std::chrono::steady_clock::now());
+  const auto left =
+      std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
   return static_cast<int>(std::max<long long>(0, left.count()));
 }
 
 std::string reason() {
   return std::strerror(errno);
+}
+
+// A server at `a` takes connections, or has as many waiting as it allows (EAGAIN).
+bool someone_listens(const sockaddr_un& a) {
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+  if (fd < 0) return false;
+  const bool live =
+      ::connect(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a) == 0 || errno == EAGAIN;
+  ::close(fd);
+  return live;
 }
 
 }  // namespace
@@ -57,13 +68,15 @@ void UnixSocket::close() {
 
 UnixSocket UnixSocket::connect(const std::string& path) {
   const sockaddr_un a = address(path);
-  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  // Non-blocking while connecting: a server that stopped accepting must not hold the caller.
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
   if (fd < 0) throw Error("socket '" + path + "': " + reason());
   if (::connect(fd, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0) {
-    const std::string why = reason();
+    const std::string why = errno == EAGAIN ? "the server accepts no more clients" : reason();
     ::close(fd);
     throw Error("socket '" + path + "': cannot connect (" + why + ")");
   }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   return UnixSocket(fd, path);
 }
 
@@ -79,6 +92,25 @@ bool UnixSocket::send_all(std::span<const char> bytes) {
       return false;
   }
   return fd_ >= 0;
+}
+
+UnixSocket::Send UnixSocket::send_until(std::span<const char> bytes, Deadline deadline) {
+  std::size_t sent = 0;
+  while (fd_ >= 0 && sent < bytes.size()) {
+    const ssize_t n =
+        ::send(fd_, bytes.data() + sent, bytes.size() - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+    if (n > 0) {
+      sent += static_cast<std::size_t>(n);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n == 0 || (errno != EAGAIN && errno != EWOULDBLOCK)) return Send::Closed;
+    pollfd p{fd_, POLLOUT, 0};  // the peer's buffer is full: wait for room, not past the deadline
+    const int ready = ::poll(&p, 1, milliseconds_until(deadline));
+    if (ready == 0) return Send::Timeout;
+    if (ready < 0 && errno != EINTR) return Send::Closed;
+  }
+  return fd_ >= 0 ? Send::Sent : Send::Closed;
 }
 
 UnixSocket::Wait UnixSocket::wait_readable(Deadline deadline) const {
@@ -101,12 +133,7 @@ UnixListener::UnixListener(std::string path) : path_(std::move(path)) {
   if (::lstat(path_.c_str(), &st) == 0) {
     if (!S_ISSOCK(st.st_mode))
       throw Error("socket '" + path_ + "': a file that is not a socket is in the way");
-    bool live = false;
-    try {
-      live = UnixSocket::connect(path_).open();
-    } catch (const Error&) {
-    }
-    if (live) throw Error("socket '" + path_ + "': another server listens there");
+    if (someone_listens(a)) throw Error("socket '" + path_ + "': another server listens there");
     ::unlink(path_.c_str());  // left behind by a server that did not stop cleanly
   }
   fd_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);

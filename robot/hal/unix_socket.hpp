@@ -21,15 +21,20 @@ class UnixSocket {
   UnixSocket(const UnixSocket&) = delete;
   UnixSocket& operator=(const UnixSocket&) = delete;
 
-  // Connects to a listening socket; throws naming the path and the reason.
+  // Connects to a listening socket without waiting (a server whose queue is full refuses);
+  // throws naming the path and the reason.
   static UnixSocket connect(const std::string& path);
 
   bool open() const { return fd_ >= 0; }
   const std::string& path() const { return path_; }
   void close();
 
-  // Writes every byte; false when the peer is gone (no SIGPIPE).
+  // Writes every byte, waiting as long as it takes; false when the peer is gone (no SIGPIPE).
   bool send_all(std::span<const char> bytes);
+  enum class Send { Sent, Closed, Timeout };
+  // Writes every byte before `deadline` and never blocks past it: Closed when the peer is gone,
+  // Timeout when it did not take the bytes in time (some may have gone: the stream is cut).
+  Send send_until(std::span<const char> bytes, Deadline deadline);
   enum class Wait { Readable, Timeout, Interrupted };
   // Waits until bytes (or the peer's close) can be read, or the deadline passes.
   Wait wait_readable(Deadline deadline) const;

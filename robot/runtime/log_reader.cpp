@@ -76,7 +76,7 @@ std::size_t LogReader::read_header(std::string_view all) {
   if (magic == kMagicV1)
     integrity_.version = 1;
   else if (magic != kMagicV2)
-    throw Error("log '" + name_ + "': not a stride log (bad magic)");
+    throw InputError("log '" + name_ + "': not a stride log (bad magic)");
   const std::size_t fixed = kMagicV2.size() + (integrity_.version == 1 ? 4 : 8);
   try {
     if (all.size() < fixed) throw Error("header ends early");
@@ -100,7 +100,7 @@ std::size_t LogReader::read_header(std::string_view all) {
     if (h.remaining() != 0) throw Error("unexpected bytes after the type list");
     return fixed + size;
   } catch (const Error& e) {
-    throw Error("log '" + name_ + "': bad header: " + e.what());
+    throw InputError("log '" + name_ + "': bad header: " + e.what());
   }
 }
 

@@ -196,9 +196,10 @@ bool Runtime::step() {
   link_.write(command_);
   if (log_) try {
       log_->write_frame();
-    } catch (const Error&) {
+    } catch (const Error& e) {
       log_.reset();  // the frames written so far stay readable; recording stops here
-      throw;
+      if (config_.on_log_error == LogErrorPolicy::Propagate) throw;
+      log_stopped_ = e.what();
     }
   if (boundary_) boundary_->after_frame(*this);
   return true;
@@ -419,6 +420,7 @@ void Runtime::start_log(const std::string& path, const LogMetadata& metadata) {
   LogMetadata all = config_metadata(running_config());
   for (const auto& [key, value] : metadata) all[key] = value;
   log_ = std::make_unique<LogWriter>(path, std::move(slots), all);
+  log_stopped_.clear();
 }
 
 std::size_t Runtime::logged_frames() const {

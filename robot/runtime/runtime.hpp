@@ -94,6 +94,9 @@ class Runtime {
   void stop_log();
   bool logging() const { return log_ != nullptr; }
   std::size_t logged_frames() const;  // frames in the log being recorded (0 without one)
+  // Under LogErrorPolicy::StopLogging: why the last log ended by itself (a full disk), as one
+  // line; "" while logging or after a log stopped on request. The frames before stay readable.
+  const std::string& log_stopped() const { return log_stopped_; }
 
   // Called at the end of every step (nullptr: none). Not owned.
   void set_frame_boundary(FrameBoundary* boundary) { boundary_ = boundary; }
@@ -154,6 +157,7 @@ class Runtime {
   std::vector<ModuleFault> faults_;
   std::int64_t frame_counter_ = 0;
   std::unique_ptr<LogWriter> log_;
+  std::string log_stopped_;
   FrameBoundary* boundary_ = nullptr;
   std::uint64_t plan_generation_ = 0;
 };

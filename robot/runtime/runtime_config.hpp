@@ -14,6 +14,11 @@ enum class ModuleErrorPolicy {
   Hold,       // caught: the frame sends the last safe command, the error is recorded once
 };
 
+enum class LogErrorPolicy {
+  Propagate,    // a failed log write leaves Runtime::step() (a console run stops with the error)
+  StopLogging,  // the log ends there, log_stopped() says why, the frame goes on (the robot)
+};
+
 struct RuntimeConfig {
   std::map<std::string, std::string> providers;   // representation -> module
   std::map<std::string, std::string> parameters;  // "Module.field" -> text value
@@ -21,6 +26,7 @@ struct RuntimeConfig {
   // need it get it at construction (ModuleContext::robot_model()). May be null.
   std::shared_ptr<const model::RobotModel> model;
   ModuleErrorPolicy on_module_error = ModuleErrorPolicy::Propagate;
+  LogErrorPolicy on_log_error = LogErrorPolicy::Propagate;
 };
 
 }  // namespace stride

@@ -1,13 +1,15 @@
 #pragma once
 // A real process for the LoLA tests: started with its output in files, waited for with a bound,
-// killed and reaped if the test ends first.
+// killed and reaped if the test ends first; optionally on a "full disk" (a file size limit).
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -36,6 +38,26 @@ class ChildProcess {
     args.push_back(nullptr);
     if (posix_spawn(&pid_, args[0], &actions, nullptr, args.data(), environ) != 0) pid_ = -1;
     posix_spawn_file_actions_destroy(&actions);
+  }
+  // The same with every file it writes bounded to `file_size_limit` bytes (RLIMIT_FSIZE) and
+  // SIGXFSZ ignored, so a write past it fails (EFBIG) as one on a full disk does.
+  ChildProcess(const std::vector<std::string>& argv, const std::string& name,
+               std::uint64_t file_size_limit)
+      : out_(scratch(name + ".out")), err_(scratch(name + ".err")) {
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    pid_ = ::fork();
+    if (pid_ != 0) return;
+    // In the child only async-signal-safe calls until exec (the parent may have threads).
+    const int o = ::open(out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = ::open(err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(o, 1), ::dup2(e, 2);
+    const rlimit limit{file_size_limit, file_size_limit};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    ::signal(SIGXFSZ, SIG_IGN);
+    ::execv(args[0], args.data());
+    ::_exit(127);
   }
   ~ChildProcess() {
     if (pid_ > 0 && !code_) {

@@ -1,5 +1,6 @@
 #include "robot/hal/lola/lola_link.hpp"
 
+#include <cmath>
 #include <thread>
 
 #include "robot/core/error.hpp"
@@ -44,10 +45,31 @@ std::unique_ptr<LolaLink> LolaLink::connect(const std::string& path, double peri
 }
 
 void LolaLink::write_nothing() {
-  if (state_ != State::Closed && !socket_.send_all(kEmptyMap)) {
-    state_ = State::Closed;
-    socket_.close();
+  if (state_ != State::Closed) send(kEmptyMap);
+}
+
+void LolaLink::close(std::string why) {
+  state_ = State::Closed;
+  closed_because_ = std::move(why);
+  socket_.close();
+}
+
+bool LolaLink::send(std::span<const char> bytes) {
+  // One period: the answer is due before LoLA's next packet, and a full buffer means a peer that
+  // has not read for many frames.
+  switch (socket_.send_until(bytes, Clock::now() + periods(1, period_))) {
+    case UnixSocket::Send::Sent:
+      return true;
+    case UnixSocket::Send::Timeout:
+      ++stats_.unsent_answers;
+      close("the peer took no answer for " + std::to_string(std::lround(period_ * 1e3)) +
+            " ms: it stopped reading");
+      return false;
+    case UnixSocket::Send::Closed:
+      break;
   }
+  close("socket closed");
+  return false;
 }
 
 bool LolaLink::reconnect() {
@@ -58,6 +80,7 @@ bool LolaLink::reconnect() {
   }
   stream_.clear();
   state_ = State::Connected;
+  closed_because_.clear();
   last_packet_ = Clock::now();
   ++stats_.reconnects;
   return true;
@@ -82,9 +105,9 @@ bool LolaLink::take_new_error(std::string& line, std::int64_t& frame) {
 }
 
 bool LolaLink::answer(const ActuatorFrame& frame) {
-  if (!have_sent_) return socket_.send_all(kEmptyMap);
+  if (!have_sent_) return send(kEmptyMap);
   encode_actuator_packet(frame, out_);
-  return socket_.send_all(out_);
+  return send(out_);
 }
 
 bool LolaLink::read(SensorFrame& out) {
@@ -108,7 +131,7 @@ bool LolaLink::read(SensorFrame& out) {
       ++stats_.bad_packets;
       record_error("LoLA sensor packet: " + error);
       newest = {};
-      if (!answer(last_sent_)) state_ = State::Closed;
+      answer(last_sent_);
     }
     if (!newest.empty()) {
       try {
@@ -120,7 +143,7 @@ bool LolaLink::read(SensorFrame& out) {
       } catch (const Error& e) {
         ++stats_.bad_packets;
         record_error(e.what());
-        if (!answer(last_sent_)) state_ = State::Closed;
+        answer(last_sent_);
       }
     }
     if (state_ == State::Closed) return false;
@@ -134,8 +157,7 @@ bool LolaLink::read(SensorFrame& out) {
     const long n = socket_.receive(stream_.reserve(kMaxPacketSize));
     if (n == -2) continue;
     if (n <= 0) {
-      state_ = State::Closed;
-      socket_.close();
+      close("socket closed");
       return false;
     }
     stream_.commit(static_cast<std::size_t>(n));
@@ -144,21 +166,17 @@ bool LolaLink::read(SensorFrame& out) {
 
 void LolaLink::write(const ActuatorFrame& in) {
   if (state_ == State::Closed) return;
-  bool sent = false;
   try {
     encode_actuator_packet(in, out_);
-    sent = socket_.send_all(out_);
-    last_sent_ = in;
-    have_sent_ = true;
   } catch (const Error& e) {  // torque mode: LoLA cannot take it
     ++stats_.torque_refused;
     record_error(e.what());
-    sent = answer(last_sent_);
+    answer(last_sent_);
+    return;
   }
-  if (!sent) {
-    state_ = State::Closed;
-    socket_.close();
-  }
+  last_sent_ = in;
+  have_sent_ = true;
+  send(out_);
 }
 
 }  // namespace stride::hal::lola

@@ -2,7 +2,9 @@
 // The robot's end of LoLA as a HardwareLink: reads each sensor packet from the unix socket and
 // answers it with the frame's commands. A packet that does not decode is answered with the last
 // command (the frame is held) and counted; no valid packet for two periods, or the socket gone,
-// and read() returns false with state() saying which.
+// and read() returns false with state() saying which. Every write has a deadline of one period:
+// a peer that stops reading closes the link (the stream may hold part of an answer) instead of
+// blocking the control loop.
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -21,7 +23,8 @@ struct LolaLinkStats {
   std::int64_t torque_refused = 0;  // frames that asked for torque mode (held instead)
   std::int64_t stalls = 0;          // times two periods passed without a valid packet
   std::int64_t reconnects = 0;
-  std::string first_error;  // the first bad packet or refused frame, one line
+  std::int64_t unsent_answers = 0;  // answers the peer did not take within a period (link closed)
+  std::string first_error;          // the first bad packet or refused frame, one line
 };
 
 // The time of packet `index` (from 0) as LoLA implies it: it sends no clock, each packet is one
@@ -48,6 +51,8 @@ class LolaLink final : public HardwareLink {
 
   enum class State { Connected, Stalled, Closed };
   State state() const { return state_; }
+  // Why the link is Closed, for the lost-link line: "socket closed", or the peer stopped reading.
+  const std::string& closed_because() const { return closed_because_; }
   // One attempt to connect again after the socket closed; true when connected.
   bool reconnect();
   // Seconds since the last valid sensor packet arrived (since connecting, before the first).
@@ -59,6 +64,8 @@ class LolaLink final : public HardwareLink {
 
  private:
   bool answer(const ActuatorFrame& frame);
+  bool send(std::span<const char> bytes);  // false: the link is closed now (closed_because())
+  void close(std::string why);
   void record_error(const std::string& line);
 
   std::string path_;
@@ -70,6 +77,7 @@ class LolaLink final : public HardwareLink {
   bool have_sent_ = false;
   bool reading_ = false;  // read() was called: before, building the controller is not silence
   State state_ = State::Connected;
+  std::string closed_because_;
   std::chrono::steady_clock::time_point last_packet_;
   LolaLinkStats stats_;
   std::string new_error_;

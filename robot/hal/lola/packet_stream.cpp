@@ -1,5 +1,6 @@
 #include "robot/hal/lola/packet_stream.hpp"
 
+#include <cstdio>
 #include <cstring>
 
 #include "robot/hal/lola/lola_protocol.hpp"
@@ -25,6 +26,17 @@ void PacketStream::append(std::span<const char> bytes) {
 
 PacketStream::Result PacketStream::next(std::span<const char>& packet, std::string& error) {
   if (begin_ == end_) return Result::NeedMore;
+  // Every LoLA packet is one map: anything else is the middle of a packet (the stream lost its
+  // place), dropped whole rather than counted value by value as packets.
+  const auto lead = static_cast<unsigned char>(buffer_[begin_]);
+  if ((lead & 0xf0) != 0x80 && lead != 0xde && lead != 0xdf) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", lead);
+    error = std::to_string(end_ - begin_) + " bytes that do not start a msgpack map (first byte " +
+            hex + ")";
+    clear();
+    return Result::Malformed;
+  }
   std::size_t offset = begin_;
   try {
     // Only the extent is wanted here; the caller decodes the packet it keeps.

@@ -18,9 +18,9 @@ class PacketStream {
   void append(std::span<const char> bytes);
 
   enum class Result { Packet, NeedMore, Malformed };
-  // The next complete value: Packet (its bytes, valid until the next call that changes the
-  // stream), NeedMore, or Malformed (`error` says why; every buffered byte is dropped, so the
-  // stream starts again with the next write of the peer).
+  // The next complete map: Packet (its bytes, valid until the next call that changes the
+  // stream), NeedMore, or Malformed (`error` says why: not a map, not msgpack, too long; every
+  // buffered byte is dropped, so the stream starts again with the next write of the peer).
   Result next(std::span<const char>& packet, std::string& error);
 
   std::size_t buffered() const { return end_ - begin_; }
