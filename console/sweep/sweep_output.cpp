@@ -134,6 +134,7 @@ SweepOutput::SweepOutput(const Sweep& sweep, const std::string& dir, bool resume
                          const std::string& command)
     : sweep_(sweep), dir_(dir) {
   create_output_dir(dir);
+  lock_.emplace(dir);  // before anything is read: a second sweep here must not run its walks
   const fs::path d(dir);
   const fs::path runs = d / "runs.csv";
   const std::string fingerprint = plan_fingerprint(sweep);

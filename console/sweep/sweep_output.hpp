@@ -5,13 +5,16 @@
 //   sweep.xml      the sweep file as it was run (sweep.txt: the spec, for sweeps built in code)
 //   manifest.txt   the binary's revision, the command, the plan's fingerprint (resume checks it)
 //   timing.csv     per run: wall seconds, attempts, worker (not part of the results)
+//   .lock          held (flock) while a sweep writes here: a second one is refused
 //   tallies.txt, <tally>.csv, <plot>.png/.csv, traces/run-<id>.csv
 // Everything is checked writable before any run starts.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "console/sweep/output_lock.hpp"
 #include "console/sweep/run_row.hpp"
 #include "console/sweep/sweep.hpp"
 
@@ -57,6 +60,7 @@ class SweepOutput {
 
   const Sweep& sweep_;
   std::string dir_;
+  std::optional<OutputLock> lock_;
   std::map<std::int64_t, std::vector<std::string>> rows_;
   int runs_fd_ = -1, timing_fd_ = -1;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // The one JSON writer: run reports and every command's --json output. Stride writes JSON but
 // never reads it, so a streaming writer (no dependency for the robot binary) is all it needs.
-// Numbers are the shortest text that reads back to the same double; non-finite ones are null.
+// Numbers are the shortest text that reads back to the same double; non-finite ones are null;
+// bytes that are not UTF-8 become U+FFFD, so the output is always valid JSON.
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +10,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "robot/core/utf8.hpp"
 
 namespace stride {
 
@@ -114,7 +117,8 @@ class JsonWriter {
   }
   void string_literal(std::string_view s) {
     out_ += '"';
-    for (char c : s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const char c = s[i];
       switch (c) {
         case '"':
           out_ += "\\\"";
@@ -133,8 +137,13 @@ class JsonWriter {
             char buf[8];
             std::snprintf(buf, sizeof buf, "\\u%04x", c);
             out_ += buf;
-          } else {
+          } else if (static_cast<unsigned char>(c) < 0x80) {
             out_ += c;
+          } else if (const std::size_t n = utf8_char_length(s, i); n > 0) {
+            out_.append(s.substr(i, n));
+            i += n - 1;
+          } else {
+            out_ += "\xef\xbf\xbd";  // U+FFFD for a byte that is not UTF-8: the JSON stays valid
           }
       }
     }

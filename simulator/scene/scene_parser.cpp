@@ -16,6 +16,7 @@
 #include "robot/model/physical_limits.hpp"
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
+#include "simulator/scene/include_walk.hpp"
 #include "simulator/scene/mujoco_options.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/solver_names.hpp"
@@ -43,47 +44,15 @@ class Parser {
     physics(XmlElement(doc.RootElement(), out_.file));
   }
 
-  void parse_file(const std::string& path, const XmlElement* included_from) {
-    std::string text;
-    try {  // a directory, device, FIFO or oversized file is refused before it is read
-      text = read_input_file(path, kMaxTextInputBytes, included_from ? "included file" : "scene");
-    } catch (const Error& e) {
-      if (included_from) included_from->fail(e.what());
-      throw;
-    }
-    parse_text(text, path, included_from);
-  }
-
-  void parse_text(const std::string& text, const std::string& path,
-                  const XmlElement* included_from) {
-    std::error_code ec;  // a name the system cannot resolve (too long) stands for itself
-    const fs::path resolved = fs::weakly_canonical(fs::path(path), ec);
-    const std::string canonical = ec ? path : resolved.string();
-    if (open_files_.count(canonical)) included_from->fail("include cycle through '" + path + "'");
-    open_files_.insert(canonical);
-    // Documents stay alive while their file names are referenced by errors.
-    docs_.push_back(std::make_unique<XMLDocument>());
-    paths_.push_back(std::make_unique<std::string>(path));
-    XMLDocument& doc = *docs_.back();
-    const std::string& file = *paths_.back();
-    if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
-      throw error_at(file, doc.ErrorLineNum(), xml_error_text(doc));
-    const XMLElement* root = doc.RootElement();
-    if (!root || std::string_view(root->Name()) != "scene")
-      throw error_at(file, root ? root->GetLineNum() : 1, "expected <scene> as the root element");
-    XmlElement scene(root, file);
-    scene.allow_only({"name"});
-    if (out_.name.empty()) out_.name = scene.text_or("name", fs::path(path).stem().string());
-    for (const XMLElement* c = root->FirstChildElement(); c; c = c->NextSiblingElement())
-      element(XmlElement(c, file));
-    open_files_.erase(canonical);
-  }
+  void parse_file(const std::string& path) { walk_.walk_file(path); }
+  void parse_text(const std::string& text, const std::string& path) { walk_.walk_text(text, path); }
 
  private:
-  std::string resolve(const XmlElement& e, const std::string& rel) const {
-    fs::path p(rel);
-    if (p.is_relative()) p = fs::path(e.file()).parent_path() / p;
-    return p.lexically_normal().string();
+  // Every file's <scene> root names the scene (the first name wins).
+  void scene_root(const XmlElement& scene) {
+    scene.allow_only({"name"});
+    if (out_.name.empty())
+      out_.name = scene.text_or("name", fs::path(scene.file()).stem().string());
   }
 
   void element(const XmlElement& e) {
@@ -106,10 +75,7 @@ class Parser {
       camera(e);
     else if (n == "light")
       light(e);
-    else if (n == "include") {
-      e.allow_only({"file"});
-      parse_file(resolve(e, e.text("file")), &e);
-    } else
+    else
       e.fail(
           "unknown element (expected physics, ground, box, ramp, uneven, robot, push, camera, "
           "light or include)");
@@ -393,8 +359,8 @@ class Parser {
     for (const auto& other : out_.robots)
       if (other.name == r.name)
         e.fail_attr("name", "a robot named '" + r.name + "' already exists");
-    r.urdf = resolve(e, e.text("urdf"));
-    r.devices = e.has("devices") ? resolve(e, e.text("devices")) : std::string();
+    r.urdf = resolve_from(e, e.text("urdf"));
+    r.devices = e.has("devices") ? resolve_from(e, e.text("devices")) : std::string();
     if (e.has("xyz")) placement_xyz(e, r);
     r.rpy = e.vector3_within("rpy", r.rpy, kMaxAngle, Dimension::Angle);
     r.fixed_base = e.boolean_or("fixed", false);
@@ -496,11 +462,10 @@ class Parser {
   SceneDescription& out_;
   std::map<std::string, std::string> seen_once_;  // element name -> "file:line" of the first
   long static_shapes_ = 0;
-  std::set<std::string> open_files_;
-  std::vector<std::unique_ptr<XMLDocument>> docs_;
-  std::vector<std::unique_ptr<std::string>> paths_;
   PhysicsAttributes physics_over_;
   bool physics_seen_ = false;
+  IncludeWalk walk_{[this](const XmlElement& e) { scene_root(e); },
+                    [this](const XmlElement& e) { element(e); }};
 };
 
 // Checks that need the whole scene: pushes name robots that exist.
@@ -526,7 +491,7 @@ SceneDescription parse_scene_file(const std::string& given, const PhysicsAttribu
   s.file = path;
   try {
     Parser p(s, physics_over);
-    p.parse_file(path, nullptr);
+    p.parse_file(path);
     p.physics_over_defaults();
     check_references(s);
   } catch (const InputError&) {
@@ -565,7 +530,7 @@ SceneDescription parse_scene_text(const std::string& text, const std::string& vi
   SceneDescription s;
   s.file = virtual_path;
   Parser p(s);
-  p.parse_text(text, virtual_path, nullptr);
+  p.parse_text(text, virtual_path);
   check_references(s);
   return s;
 }
