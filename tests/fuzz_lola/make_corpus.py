@@ -39,6 +39,8 @@ seeds = {
     "actuator_empty": b"\x01" + pack({}),
     "stream_two_sensor_packets": b"\x02" + sensor() + sensor(position0=0.2),
     "stream_garbage_then_packet": b"\x02" + b"\xc1\xc1" + sensor(),
+    # 895-byte packets: each completed by the next one's first byte, the rest not a map
+    "stream_short_packets": b"\x02" + sensor()[:-1] * 3,
 }
 assert len(sensor()) == 896 and len(actuator()) == 786
 os.makedirs(os.path.join(HERE, "corpus"), exist_ok=True)
