@@ -39,13 +39,13 @@ def test(stride, d):
         check(line == f"> set module:PatternWalk start_delay=1.75", f"the edit sent {line!r}")
         state, text = console(d, f"get {KEY}")
         check(state == "ok" and text.strip() == "1.75", f"get after the edit: {state} {text!r}")
-        shown = wait_js(d, f"document.querySelector('{VALUE_SEL}').textContent.trim() === '1.75'", 10,
+        wait_js(d, f"document.querySelector('{VALUE_SEL}').textContent.trim() === '1.75'", 10,
                         "the tree shows the new value")
         state, line = edit(d, "soon")
         check(state == "error", f"a bad value was accepted: {line}")
-        err = wait_js(d, f"document.querySelector('.tree-node[data-key=\"{KEY}\"] .tree-error')"
-                         " && document.querySelector('.tree-node[data-key=\"{KEY}\"] .tree-error').textContent", 10,
-                      "the error beside the field")
+        err_sel = f'.tree-node[data-key="{KEY}"] .tree-error'
+        err = wait_js(d, f"document.querySelector('{err_sel}') && document.querySelector('{err_sel}').textContent",
+                      10, "the error beside the field")
         check("\n" not in err.strip() and "start_delay" in err, f"the error is not one line naming the field: {err!r}")
         state, text = console(d, f"get {KEY}")
         check(text.strip() == "1.75", f"a refused edit changed the value: {text!r}")

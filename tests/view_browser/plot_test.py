@@ -31,12 +31,18 @@ def test(stride, d):
             check(vi is not None and abs(vi - ti) < 1e-9, f"sample {i}: FrameInfo.time {vi} at t {ti}")
             if i:
                 check(abs(ti - t[i - 1] - period) < 1e-6, f"samples {i - 1},{i} not one period apart: {t[i - 1]}, {ti}")
-        drawn = wait_js(d, "strideView.plots.plots[0].u.data[0].length", 10, "the plot drew samples")
-        csv = d.execute_script("return strideView.plots.plots[0].csv()").splitlines()
+        wait_js(d, "strideView.plots.plots[0].u.data[0].length >= 50", 10, "the plot drew 50 samples")
+        d.find_element(By.ID, "plot-pause").click()  # what is shown stays put for the export
+        drawn, csv = d.execute_script("const p = strideView.plots.plots[0];"
+                                      "return [p.u.data[0], p.csv()];")
+        csv = csv.splitlines()
         check(csv[0] == f"t,{KEY}", f"CSV header {csv[0]!r}")
-        first = [float(x) for x in csv[1].split(",")]
-        check(len(csv) > 50 and abs(first[0] - first[1]) < 1e-9, f"CSV rows: {len(csv)}, first {csv[1]!r}")
-        print(f"{n} samples, period {period} s, plot drew {drawn}, CSV {len(csv) - 1} rows")
+        check(len(csv) - 1 == len(drawn), f"CSV rows {len(csv) - 1}, plot shows {len(drawn)}")
+        for line, x in zip(csv[1:], drawn):
+            a, b = (float(v) for v in line.split(","))
+            check(a == x and abs(a - b) < 1e-9, f"CSV row {line!r} for the plot's t {x}")
+        d.find_element(By.ID, "plot-pause").click()
+        print(f"{n} samples, period {period} s, CSV {len(csv) - 1} rows as the plot shows them")
         if screenshot_dir():
             screenshot_mid_walk(d)
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Picking in a local simulation: the push tool, dragged from the torso, sends `push Torso fx fy 0
-0.1` with the force along the drag; a hard enough push topples the NAO, and the fall shows at once
+"""Picking in a local simulation: the push tool, dragged from the torso, sends `push <torso link> fx fy
+0 0.1` with the force along the drag; a hard enough push topples the NAO, and the fall shows at once
 in the banner. The move tool, dragged on the ground, sends `mv x y z yaw` and the robot is there."""
 import math
 import sys
+import time
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
@@ -37,6 +38,8 @@ def test(stride, d):
         open_page(d, view.url)
         d.find_element(By.ID, "view-front").click()  # the torso faces the camera; drags go along y
         d.find_element(By.ID, "follow-toggle").click()  # the camera stays put while the robot moves
+        wait_js(d, "strideView.tree && strideView.view.draws > 2", 15, "the page settled")
+        time.sleep(0.5)  # the last layout change (the tree's arrival) has reached the camera
         torso = d.execute_script("return strideView.frame.robots[0].links[0].slice(0, 3)")
         d.find_element(By.ID, "tool-move").click()
         target = [torso[0], torso[1] - 0.15, 0.0]
@@ -56,7 +59,8 @@ def test(stride, d):
         drag(d, moved, [moved[0], moved[1] + 0.25, moved[2]])
         line, state = last_command(d)
         words = line.split()
-        check(words[:3] == [">", "push", "Torso"] and state == "ok", f"the push tool sent {line!r} ({state})")
+        torso_name = d.execute_script("return strideView.scene.robots[0].links[0].name")
+        check(words[:3] == [">", "push", torso_name] and state == "ok", f"the push tool sent {line!r} ({state})")
         fx, fy, fz, secs = map(float, words[3:7])
         check(fy > 50 and abs(fx) < 0.3 * fy and fz == 0 and secs == 0.1, f"push force {fx},{fy},{fz} for {secs} s")
         console(d, "run 3")

@@ -95,7 +95,7 @@ conn.on("event", (m) => {
   if (m.kind === "override_swapped") refreshTree();
   consolePane.print(`[${m.kind}] ${m.text}`, m.kind === "info" ? "con-out" : "con-err");
 });
-conn.on("status", (m) => status.setDropped(m.dropped));
+conn.on("status", (m) => status.setStatus(m));
 conn.on("error", (m) => {
   const key = store.rejectFrom(m.error);
   if (key) {

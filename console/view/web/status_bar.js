@@ -47,12 +47,13 @@ export class StatusBar {
     $("st-frame").textContent = `frame ${frame.frame}`;
     this.setRunning(frame.running);
     this.setRealtime(frame.realtime);
-    this.setDropped(Math.max(this.dropped, frame.dropped || 0));
+    this.dropped = frame.dropped || 0;
+    $("st-dropped").textContent = `${this.dropped} dropped`;
   }
 
-  setDropped(n) {
-    this.dropped = n;
-    $("st-dropped").textContent = `${n} dropped`;
+  // The bridge's status: frames dropped for all pages together.
+  setStatus(status) {
+    $("st-dropped").title = `frames this page did not get; all pages: ${status.dropped}, pages: ${status.clients}`;
   }
 }
 
