@@ -55,10 +55,8 @@ std::unique_ptr<Simulation> Simulation::from_file(const std::string& path,
 void Simulation::build() {
   auto world = make_physics_world(scene_.physics, scene_.ground);
   for (const auto& b : scene_.boxes) world->add_static_box(b);
-  for (size_t i = 0; i < scene_.uneven.size(); ++i) {
-    const auto& u = scene_.uneven[i];
-    world->add_uneven_patch(u, u.seed ? u.seed : scene_.physics.seed * 7919 + i + 1);
-  }
+  for (size_t i = 0; i < scene_.uneven.size(); ++i)
+    world->add_uneven_patch(scene_.uneven[i], uneven_patch_seed(scene_, i));
   std::vector<std::unique_ptr<SimulatedRobot>> robots;
   std::vector<int> steps_per_frame;
   int bodies = 0, geoms = 0;

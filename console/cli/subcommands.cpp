@@ -21,6 +21,7 @@ int robot_main(Args args, std::ostream& out, std::ostream& err);
 int lola_main(Args args, std::ostream& out, std::ostream& err);
 int sweep_main(Args args, std::ostream& out, std::ostream& err);
 int tune_main(Args args, std::ostream& out, std::ostream& err);
+int view_main(Args args, std::ostream& out, std::ostream& err);
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
@@ -84,6 +85,11 @@ const std::vector<Subcommand>& subcommands() {
        "over a tuning file's parameters, each generation one sweep on local workers or MPI "
        "ranks; the best candidate against the thesis' values on the held-out walks only",
        tune_main},
+      {"view",
+       "view <scene> | --connect host:port | --log <file> [--scene S] [--listen addr:port] "
+       "[--token-file f] [--seconds S]: the live view in a browser (3D scene, plots, data, "
+       "console); prints its URL first (--listen port 0: any free port)",
+       view_main},
       {"experiment",
        "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
        "push-recovery|landing-control [--seeds N] [--jobs N] [--out dir] [--scenes dir] "

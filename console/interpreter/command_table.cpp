@@ -153,6 +153,14 @@ void check_serve(const Words& a) {
   }
   check_endpoint(a[0], "serve");
 }
+void check_view(const Words& a) {
+  if (a.empty()) return;
+  if (a[0] == "stop") {
+    if (a.size() != 1) throw Error("view stop takes no arguments");
+    return;
+  }
+  check_endpoint(a[0], "view");
+}
 void check_wait(const Words& a) {
   if (a[0] != "until") throw Error("expected 'until', got " + quote(a[0]));
   if (a.size() == 5) throw Error("give 'timeout <seconds>' after the value");
@@ -232,6 +240,10 @@ const std::vector<CommandSpec>& command_table() {
        "serve the selected robot's controller to other consoles (loopback unless a token is "
        "given, by file or STRIDE_TOKEN)",
        1, 2, check_serve},
+      {"view", "view [[host:]port] [token-file] | view stop",
+       "the live view in a browser for what the console acts on (default 127.0.0.1:8080, port 0: "
+       "any free one; beyond loopback a token is needed, by file or STRIDE_TOKEN)",
+       0, 2, check_view},
       {"mv", "mv <x> <y> <z> [yaw]", "move the robot (m, rad)", 3, 4, check_mv},
       {"sn", "sn noise|delay|quantise on|off", "sensor imperfections", 2, 2, check_sn},
       {"snapshot", "snapshot <file.png> [view]",

@@ -11,6 +11,7 @@
 #include "console/interpreter/tokenizer.hpp"
 #include "console/interpreter/values.hpp"
 #include "console/session/sim_session.hpp"
+#include "console/view/view_bridge.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
@@ -168,6 +169,7 @@ void Interpreter::record_plot_row() {
 }
 
 bool Interpreter::after_step() {
+  if (step_hook_) step_hook_();
   print_watches();
   record_plot_row();
   RobotTarget& robot = target();
@@ -195,6 +197,7 @@ void Interpreter::observe(const std::vector<std::string>& until_keys) {
   std::vector<std::string> observed = watch_keys_;
   observed.insert(observed.end(), plot_keys_.begin(), plot_keys_.end());
   observed.insert(observed.end(), until_keys.begin(), until_keys.end());
+  observed.insert(observed.end(), observed_extra_.begin(), observed_extra_.end());
   target().observe(observed);
 }
 
@@ -231,6 +234,7 @@ bool Interpreter::advance(std::uint64_t steps, const std::function<bool()>& unti
 std::chrono::steady_clock::duration Interpreter::run_slice(
     std::chrono::steady_clock::duration budget) {
   using Clock = std::chrono::steady_clock;
+  poll_view();
   if (!running_) return Clock::duration::zero();
   const auto start = Clock::now();
   Clock::duration wait = Clock::duration::zero();
@@ -338,6 +342,7 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "connect") return connect(a);
   if (n == "disconnect") return disconnect(a);
   if (n == "serve") return serve(a);
+  if (n == "view") return view(a);
   if (n == "mv") {
     simulation(n).move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"),
                              parse_number(a[2], "z"),

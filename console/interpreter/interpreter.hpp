@@ -21,6 +21,10 @@
 #include "console/target/local_target.hpp"
 #include "console/target/remote_target.hpp"
 
+namespace stride::view {
+class ViewBridge;
+}
+
 namespace stride::console {
 
 class Interpreter {
@@ -57,6 +61,11 @@ class Interpreter {
   std::vector<std::string> robot_names();
   // Call while waiting for input: keeps connections alive, serves `serve` clients when paused.
   void idle();
+  bool realtime() const { return realtime_; }
+  // Called after every step of an advance, before watches (the view samples and sends from it).
+  void set_step_hook(std::function<void()> hook) { step_hook_ = std::move(hook); }
+  // Keys read after every step besides watch/plot/until ones (a remote robot streams them).
+  void set_observed_extra(std::vector<std::string> keys) { observed_extra_ = std::move(keys); }
 
  private:
   void dispatch(const Command& c);
@@ -68,6 +77,8 @@ class Interpreter {
   void connect(const std::vector<std::string>& a);
   void disconnect(const std::vector<std::string>& a);
   void serve(const std::vector<std::string>& a);
+  void view(const std::vector<std::string>& a);
+  void poll_view();  // the view's pages: their commands run here, between the console's
   void lost_connection(const std::string& why);
   void load(const std::string& path);
   std::string resolve(const std::string& path) const;  // relative to the running script first
@@ -125,6 +136,9 @@ class Interpreter {
   std::uint64_t paced_steps_ = 0;                     // steps since pace_start_
   SweepCommand sweep_;
   TuneCommand tune_;
+  std::function<void()> step_hook_;
+  std::vector<std::string> observed_extra_;
+  std::unique_ptr<view::ViewBridge> view_;  // `view`: last, so it goes first
 };
 
 }  // namespace stride::console

@@ -127,6 +127,7 @@ void Interpreter::idle() {
     }
   }
   local_.serve_idle();
+  poll_view();
 }
 
 }  // namespace stride::console

@@ -4,7 +4,8 @@
 
 namespace stride::sim {
 
-void PhysicsWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
+std::vector<StaticBox> uneven_tiles(const UnevenPatch& patch, std::uint64_t seed) {
+  std::vector<StaticBox> tiles;
   NoiseSource rng(seed);
   const int nx = patch.tiles_x();
   const int ny = patch.tiles_y();
@@ -25,8 +26,18 @@ void PhysicsWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed
                                    patch.centre.y() - patch.size.y() / 2 + (j + 0.5) * patch.cell,
                                    top - thickness / 2);
       tile.pose.translation() = centre;
-      add_static_box(tile);
+      tiles.push_back(tile);
     }
+  return tiles;
+}
+
+void PhysicsWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
+  for (const StaticBox& tile : uneven_tiles(patch, seed)) add_static_box(tile);
+}
+
+std::uint64_t uneven_patch_seed(const SceneDescription& scene, std::size_t i) {
+  const UnevenPatch& u = scene.uneven[i];
+  return u.seed ? u.seed : scene.physics.seed * 7919 + i + 1;
 }
 
 }  // namespace stride::sim

@@ -44,6 +44,11 @@ class PhysicsWorld {
   std::vector<ContactRecord> contacts_;
 };
 
+// The tiles of an uneven patch as static boxes (what add_uneven_patch adds), and the seed a
+// scene's patch `i` is built with.
+std::vector<StaticBox> uneven_tiles(const UnevenPatch& patch, std::uint64_t seed);
+std::uint64_t uneven_patch_seed(const SceneDescription& scene, std::size_t i);
+
 // The world of the engine `physics` names; throws stride::Error if that engine is not built in.
 std::unique_ptr<PhysicsWorld> make_physics_world(const PhysicsSettings& physics,
                                                  const GroundSettings& ground);

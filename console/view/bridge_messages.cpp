@@ -1,0 +1,246 @@
+// The messages the bridge builds from its target: hello, scene, frame (with samples) and tree
+// (PROTOCOL.md), and when a frame is due.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "console/build_revision.hpp"
+#include "console/interpreter/interpreter.hpp"
+#include "console/view/kinematic_frame.hpp"
+#include "console/view/robot_frame.hpp"
+#include "console/view/scene_message.hpp"
+#include "console/view/type_desc_json.hpp"
+#include "console/view/view_bridge.hpp"
+#include "robot/core/data_dir.hpp"
+#include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
+#include "robot/model/urdf_loader.hpp"
+
+namespace stride::view {
+
+namespace {
+
+constexpr auto kFrameInterval = std::chrono::microseconds(1000000 / 60);
+constexpr std::size_t kMaxRows = 10000;  // samples kept while no frame goes out
+constexpr double kFallTilt = 0.8;        // rad, the scenes' default fall tilt
+const char* const kJointsKey = "representation:JointSensorData.position";
+const char* const kAnglesKey = "representation:InertialSensorData.angles";
+const char* const kModulesKey = "representation:ModuleTimes.modules";
+const char* const kTimesKey = "representation:ModuleTimes.ns";
+
+// The local simulation when it is what the console acts on and has a scene, else null.
+sim::Simulation* local_simulation(console::Interpreter& in) {
+  console::LocalTarget& local = in.local();
+  if (&in.target() != static_cast<console::RobotTarget*>(&local) || !local.loaded()) return nullptr;
+  return &local.session().simulation();
+}
+
+}  // namespace
+
+double ViewBridge::time() {
+  if (sim::Simulation* s = local_simulation(interpreter_)) return s->time();
+  try {
+    return parse_number(interpreter_.target().time_text(), "time");
+  } catch (const Error&) {
+    return 0;
+  }
+}
+
+std::uint64_t ViewBridge::step_count() {
+  if (sim::Simulation* s = local_simulation(interpreter_)) return s->steps();
+  const double dt = interpreter_.target().step_seconds();
+  return dt > 0 ? static_cast<std::uint64_t>(std::llround(time() / dt)) : 0;
+}
+
+int ViewBridge::steps_per_frame() {
+  sim::Simulation* s = local_simulation(interpreter_);
+  if (!s) return 1;  // a robot's steps are its control frames
+  if (s->robot_count() == 0) return 0;
+  return static_cast<int>(std::lround(s->robot(0).period() / s->scene().physics.step));
+}
+
+Json ViewBridge::hello() {
+  const double period = interpreter_.target().step_seconds() * std::max(1, steps_per_frame());
+  return {{"type", "hello"},
+          {"mode", mode_},
+          {"target", interpreter_.target().name()},
+          {"version", std::string(console::build_revision())},
+          {"paused", !interpreter_.running()},
+          {"realtime", interpreter_.realtime()},
+          {"period", period},
+          {"log_frames", log_frames_}};
+}
+
+Json ViewBridge::scene() {
+  sim::Simulation* s = local_simulation(interpreter_);
+  if (kinematic()) {
+    const model::RobotModel* m = kinematic_model();
+    std::vector<SceneRobot> robots;
+    if (m) robots.push_back({s ? s->robot(0).name() : interpreter_.target().name(), m});
+    return scene_message(s ? s->scene().name : interpreter_.target().name(),
+                         s ? &s->scene() : nullptr, robots);
+  }
+  if (s) {
+    std::vector<SceneRobot> robots;
+    for (int i = 0; i < s->robot_count(); ++i)
+      robots.push_back({s->robot(i).name(), &s->robot(i).model()});
+    return scene_message(s->scene().name, &s->scene(), robots);
+  }
+  return scene_message(interpreter_.target().name(), nullptr, {});
+}
+
+bool ViewBridge::kinematic() {
+  return mode_ == "log" || !local_simulation(interpreter_);
+}
+
+const model::RobotModel* ViewBridge::kinematic_model() {
+  if (sim::Simulation* s = local_simulation(interpreter_))
+    return s->robot_count() > 0 ? &s->robot(0).model() : nullptr;
+  if (!shipped_model_)
+    shipped_model_ = std::make_unique<model::RobotModel>(
+        model::load_urdf(data_file("scenes/robots/nao/nao.urdf")));
+  return shipped_model_.get();
+}
+
+void ViewBridge::observe_keys() {
+  std::vector<std::string> keys = watch_keys_;
+  if (kinematic()) keys.insert(keys.end(), {kJointsKey, kAnglesKey, kModulesKey, kTimesKey});
+  interpreter_.set_observed_extra(std::move(keys));
+}
+
+Json ViewBridge::robots_json() {
+  Json robots = Json::array();
+  sim::Simulation* s = local_simulation(interpreter_);
+  if (!kinematic()) {
+    for (int i = 0; s && i < s->robot_count(); ++i)
+      robots.push_back(robot_frame_json(simulated_robot_frame(*s, i)));
+    return robots;
+  }
+  const model::RobotModel* m = kinematic_model();
+  if (!m) return robots;
+  try {
+    const std::vector<double> angles = numbers(value(kAnglesKey));
+    if (angles.size() != 2) return robots;
+    RobotFrame f = kinematic_robot_frame(*m, s ? s->robot(0).name() : interpreter_.target().name(),
+                                         named_numbers(value(kJointsKey)), angles[0], angles[1]);
+    f.fell = std::abs(angles[0]) > kFallTilt || std::abs(angles[1]) > kFallTilt;
+    robots.push_back(robot_frame_json(f));
+  } catch (const Error&) {
+    // a robot without those representations is drawn without its body
+  }
+  return robots;
+}
+
+// Each module's time in the last frame, ms (the runtime's ModuleTimes); {} if unknown.
+Json ViewBridge::module_times() {
+  Json times = Json::object();
+  try {
+    const std::vector<double> ns = numbers(value(kTimesKey));
+    const std::vector<std::string> names = strings(value(kModulesKey));
+    for (std::size_t i = 0; i < ns.size() && i < names.size(); ++i) times[names[i]] = ns[i] / 1e6;
+  } catch (const Error&) {
+    // a target without module times (no controller)
+  }
+  return times;
+}
+
+Json ViewBridge::frame(bool with_samples) {
+  Json robots = robots_json();
+  Json rows = Json::array();
+  for (auto& r : with_samples ? rows_ : std::vector<std::vector<double>>{}) {
+    Json row = Json::array();
+    for (double v : r) row.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+    rows.push_back(std::move(row));
+  }
+  if (with_samples) rows_.clear();
+  const int spf = std::max(1, steps_per_frame());
+  return {{"type", "frame"},
+          {"seq", seq_++},
+          {"t", time()},
+          {"frame", step_count() / static_cast<std::uint64_t>(spf)},
+          {"running", interpreter_.running()},
+          {"realtime", interpreter_.realtime()},
+          {"log_frame", log_frame_ ? Json(*log_frame_) : Json(nullptr)},
+          {"robots", std::move(robots)},
+          {"samples", {{"keys", watch_keys_}, {"rows", std::move(rows)}}},
+          {"times", module_times()}};
+}
+
+void ViewBridge::sample() {
+  if (watch_keys_.empty()) return;
+  if (rows_.size() >= kMaxRows) rows_.erase(rows_.begin());
+  std::vector<double> row{time()};
+  for (const std::string& key : watch_keys_) {
+    double v = std::nan("");
+    try {
+      const std::string text = value(key);
+      v = text == "true" ? 1.0 : text == "false" ? 0.0 : parse_number(text, key);
+    } catch (const Error&) {
+    }
+    row.push_back(v);
+  }
+  rows_.push_back(std::move(row));
+}
+
+void ViewBridge::send_frame_if_due(bool force) {
+  const auto now = std::chrono::steady_clock::now();
+  if (!force && now - last_frame_ < kFrameInterval) return;
+  const std::uint64_t steps = step_count();
+  const bool running = interpreter_.running();
+  if (!force && steps == last_steps_ && running == last_running_) return;
+  last_frame_ = now;
+  last_steps_ = steps;
+  last_running_ = running;
+  if (server_.clients() == 0) return void(rows_.clear());
+  server_.broadcast_frame(dump(frame(true)));
+}
+
+void ViewBridge::check_fall() {
+  sim::Simulation* s = local_simulation(interpreter_);
+  const bool fell = s && s->robot_count() > 0 && s->robot(0).fallen();
+  if (fell && !fell_) event("fall", s->robot(0).name() + " fell");
+  fell_ = fell;
+}
+
+Json ViewBridge::tree() {
+  console::RobotTarget& t = interpreter_.target();
+  Json reps = Json::array(), modules = Json::array(), debug = Json::array();
+  std::map<std::string, Json> provides;  // module -> what it provides
+  try {
+    for (const std::string& r : t.representations()) {
+      const std::string provider = t.provider_of(r);
+      if (!provider.empty()) provides[provider].push_back(r);
+      Json rep = {{"name", r},
+                  {"provider", provider},
+                  {"available", t.providers_available(r)},
+                  {"requires", Json::array()}};
+      rep["fields"] = type_desc_json(t.type_of("representation:" + r));
+      reps.push_back(std::move(rep));
+    }
+    // Every module that ran (execution order, with its time) and every one with parameters.
+    const Json times = module_times();
+    const std::vector<std::string> with_params = t.parameter_modules();
+    std::vector<std::string> names = strings(value(kModulesKey));
+    for (const std::string& m : with_params)
+      if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
+    for (const std::string& m : names) {
+      const bool params = std::find(with_params.begin(), with_params.end(), m) != with_params.end();
+      modules.push_back(
+          {{"name", m},
+           {"requires", Json::array()},
+           {"provides", provides.contains(m) ? provides[m] : Json::array()},
+           {"params", params ? type_desc_json(t.type_of("module:" + m)) : Json(nullptr)},
+           {"ms", times.contains(m) ? times[m] : Json(nullptr)}});
+    }
+    for (const auto& [name, state] : t.debug_requests())
+      debug.push_back({{"name", name}, {"state", std::string(debug_switch_name(state))}});
+  } catch (const Error& e) {
+    return {{"type", "error"}, {"error", std::string("tree: ") + e.what()}};
+  }
+  return {{"type", "tree"},
+          {"representations", std::move(reps)},
+          {"modules", std::move(modules)},
+          {"debug", std::move(debug)}};
+}
+
+}  // namespace stride::view

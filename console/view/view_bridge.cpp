@@ -1,0 +1,198 @@
+#include "console/view/view_bridge.hpp"
+
+#include <ostream>
+#include <regex>
+#include <sstream>
+
+#include "console/interpreter/interpreter.hpp"
+#include "console/interpreter/values.hpp"
+#include "console/view/output_capture.hpp"
+#include "robot/core/error.hpp"
+
+namespace stride::view {
+
+namespace {
+
+std::string first_word(const std::string& line) {
+  const auto b = line.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return line.substr(b, line.find_first_of(" \t", b) - b);
+}
+
+// Commands after which the page's 3D scene is another one.
+bool changes_scene(const std::string& word) {
+  return word == "load" || word == "reset" || word == "robot" || word == "connect" ||
+         word == "disconnect";
+}
+
+}  // namespace
+
+// `log goto k` shows frame k; `log load f` another log (its frame count from the summary).
+void ViewBridge::note_log_command(const std::string& line, const std::string& output) {
+  std::istringstream words(line);
+  std::string log, verb, arg;
+  words >> log >> verb >> arg;
+  try {
+    if (verb == "goto") log_frame_ = static_cast<std::size_t>(std::stoull(arg));
+    if (verb == "load") {
+      log_frame_.reset();
+      std::smatch m;
+      log_frames_ = std::regex_search(output, m, std::regex(": ([0-9]+) frames"))
+                        ? static_cast<std::size_t>(std::stoull(m[1]))
+                        : 0;
+    }
+  } catch (const std::exception&) {
+    // the command succeeded, so its argument was a number; nothing to note otherwise
+  }
+}
+
+ViewBridge::ViewBridge(console::Interpreter& interpreter, std::ostream& out,
+                       WebServerOptions options, std::string mode)
+    : interpreter_(interpreter), out_(out), mode_(std::move(mode)), server_(std::move(options)) {
+  interpreter_.set_step_hook([this] { on_step(); });
+  observe_keys();
+}
+
+ViewBridge::~ViewBridge() {
+  interpreter_.set_step_hook({});
+}
+
+void ViewBridge::poll() {
+  for (ClientEvent& e : server_.take_events()) {
+    switch (e.kind) {
+      case ClientEvent::Kind::Joined:
+        on_join(e.client, e.read_only);
+        break;
+      case ClientEvent::Kind::Message:
+        on_message(e.client, e.text);
+        break;
+      case ClientEvent::Kind::Left:
+        read_only_.erase(e.client);
+        break;
+    }
+  }
+  check_fall();
+  send_frame_if_due(false);
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_status_ > std::chrono::seconds(2) && server_.clients() > 0) {
+    last_status_ = now;
+    server_.broadcast(
+        dump({{"type", "status"}, {"dropped", server_.dropped()}, {"clients", server_.clients()}}));
+  }
+}
+
+void ViewBridge::event(const std::string& kind, const std::string& text) {
+  server_.broadcast(dump({{"type", "event"}, {"kind", kind}, {"text", text}, {"t", time()}}));
+}
+
+void ViewBridge::on_step() {
+  const int spf = steps_per_frame();
+  if (spf > 0 && step_count() % static_cast<std::uint64_t>(spf) == 0) sample();
+  send_frame_if_due(false);
+}
+
+void ViewBridge::on_join(std::uint64_t client, bool read_only) {
+  if (read_only) read_only_.insert(client);
+  server_.send(client, dump(hello()));
+  server_.send(client, dump(scene()));
+  Json f = frame(false);
+  f["dropped"] = 0;  // a page's count starts with it
+  server_.send(client, dump(f));
+}
+
+void ViewBridge::on_message(std::uint64_t client, const std::string& text) {
+  ViewRequest r;
+  try {
+    r = decode_view_message(text);
+  } catch (const Error& e) {
+    server_.send(client, dump({{"type", "error"}, {"error", e.what()}}));
+    return;
+  }
+  if (const auto* c = std::get_if<CmdRequest>(&r)) return run_cmd(client, *c);
+  if (const auto* w = std::get_if<WatchRequest>(&r)) return watch(client, *w);
+  if (const auto* g = std::get_if<GetRequest>(&r)) return get(client, *g);
+  if (std::holds_alternative<TreeRequest>(r)) return server_.send(client, dump(tree()));
+  server_.send(client, dump({{"type", "error"}, {"error", "ws message: already authenticated"}}));
+}
+
+void ViewBridge::run_cmd(std::uint64_t client, const CmdRequest& c) {
+  const std::string word = first_word(c.line);
+  Json reply = {{"type", "reply"}, {"id", c.id}};
+  if (read_only_.contains(client) && word != "get" && word != "help" && !word.empty()) {
+    reply.update(
+        {{"ok", false}, {"output", ""}, {"error", word + ": this page's token is read-only"}});
+    return server_.send(client, dump(reply));
+  }
+  std::string error;
+  const std::string output = execute(c.line, error);
+  reply.update({{"ok", error.empty()}, {"output", output}});
+  if (!error.empty()) reply["error"] = error;
+  server_.send(client, dump(reply));
+  send_frame_if_due(true);
+}
+
+std::string ViewBridge::execute(const std::string& line, std::string& error) {
+  std::ostringstream captured;
+  {
+    OutputCapture capture(out_, captured);
+    try {
+      interpreter_.execute(line);
+    } catch (const Error& e) {
+      error = e.what();
+    } catch (const std::exception& e) {  // a failure the console does not describe: its text
+      error = e.what();
+    }
+  }
+  const std::string word = first_word(line);
+  if (error.empty() && word == "log") note_log_command(line, captured.str());
+  if (changes_scene(word)) refresh_scene();
+  return captured.str();
+}
+
+void ViewBridge::refresh_scene() {
+  observe_keys();
+  server_.broadcast(dump(scene()));
+}
+
+std::string ViewBridge::command(const std::string& line) {
+  std::string error;
+  std::string output = execute(line, error);
+  send_frame_if_due(true);
+  if (!error.empty()) throw Error(error);
+  return output;
+}
+
+std::string ViewBridge::value(const std::string& key) {
+  if (key.starts_with("log.")) return interpreter_.local().get(key);
+  return interpreter_.target().get(key);
+}
+
+void ViewBridge::watch(std::uint64_t client, const WatchRequest& w) {
+  for (const std::string& key : w.keys) {
+    std::string problem;
+    try {
+      const std::string v = value(key);
+      if (v != "true" && v != "false") console::parse_number(v, key);
+    } catch (const Error& e) {
+      problem = e.what();
+    }
+    if (!problem.empty())
+      return server_.send(client,
+                          dump({{"type", "error"}, {"error", "watch: " + key + ": " + problem}}));
+  }
+  watch_keys_ = w.keys;
+  rows_.clear();
+  observe_keys();
+}
+
+void ViewBridge::get(std::uint64_t client, const GetRequest& g) {
+  Json reply = {{"type", "value"}, {"id", g.id}, {"key", g.key}};
+  try {
+    reply["text"] = value(g.key);
+  } catch (const Error& e) {
+    reply["error"] = e.what();
+  }
+  server_.send(client, dump(reply));
+}
+
+}  // namespace stride::view
