@@ -92,7 +92,9 @@ void LogDirectory::discard(const std::string& name) {
 int LogDirectory::open_served(const std::string& name) const {
   const std::string path = path_of(name);
   const auto it = created_.find(name);
-  Fd fd(it == created_.end() ? -1 : ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+  // O_NONBLOCK: a FIFO put in its place must not stall the server thread in open().
+  const int flags = O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC;
+  Fd fd(it == created_.end() ? -1 : ::open(path.c_str(), flags));
   struct stat st {};
   // Replaced since (removed, renamed over, a link put there): not ours any more.
   if (!fd || ::fstat(fd.get(), &st) != 0 || st.st_dev != it->second.device ||
