@@ -48,14 +48,21 @@ def test(stride, d):
 
 
 def screenshot_mid_walk(d):
-    """The README picture: mid-walk, every overlay on, knee angles plotted."""
+    """The README picture: 5 s into the walk from a reset, every overlay on, knee angles plotted."""
+    console(d, "reset")
+    wait_js(d, "strideView.frame.t < 0.5", 10, "the reset")
+    d.find_element(By.ID, "plot-add").click()
     for k in KNEES:
         tree_button(d, k, "tree-plot")
     for box_id in ["ov-contacts", "ov-footsteps"]:
         if not d.find_element(By.ID, box_id).is_selected():
             d.find_element(By.ID, box_id).click()
-    wait_js(d, "strideView.frame.t > 4.5", 50, "the walk under way (t > 4.5 s)")
-    console(d, "pause")
+    console(d, "run 5", timeout=40)
+    d.find_element(By.ID, "tree-filter").clear()
+    d.find_element(By.ID, "tree-filter").send_keys("JointSensorData.position")
+    wait_js(d, "strideView.plots.plots[1].u.data[0].length > 100", 10, "the knee plot filled")
+    wait_js(d, "![...document.querySelectorAll('#tree .tree-value')].slice(0, 24).some(e => e.textContent === '.')",
+            10, "the tree's values fetched")
     save_screenshot(d, "view_walking.png")
 
 

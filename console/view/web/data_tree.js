@@ -33,6 +33,13 @@ function typeLabel(t) {
   return t.kind === "struct" ? "" : t.kind;
 }
 
+// A value as get printed it; numbers to 6 digits on screen, the whole text in the tooltip.
+function showValue(el, text) {
+  const n = Number(text);
+  el.textContent = text !== "" && Number.isFinite(n) ? String(+n.toPrecision(6)) : text;
+  el.title = `${text} (click to edit)`;
+}
+
 const isLeaf = (t) => t && t.kind !== "struct" && t.kind !== "array";
 
 export class DataTree {
@@ -133,11 +140,14 @@ export class DataTree {
     const number = node.type && node.type.kind === "number";
     row.innerHTML = `<span class="tree-toggle"></span><span class="tree-name"></span>
       <span class="tree-type"></span><span class="tree-value"></span>`;
-    row.querySelector(".tree-name").textContent = flat ? node.key : `${node.name} ${node.note || ""}`;
+    const name = row.querySelector(".tree-name");
+    // A filtered row shows its whole key, cut at the front when long (the end names the field).
+    name.textContent = flat ? `\u200e${node.key.replace(/^(representation|module):/, "")}\u200e` : `${node.name} ${node.note || ""}`;
+    name.classList.toggle("flat", flat);
+    name.title = node.key;
     row.querySelector(".tree-type").textContent = typeLabel(node.type);
     const value = row.querySelector(".tree-value");
     if (number) {
-      const name = row.querySelector(".tree-name");
       name.draggable = true;
       name.addEventListener("dragstart", (ev) => ev.dataTransfer.setData("text/plain", node.key));
     }
@@ -178,7 +188,7 @@ export class DataTree {
     for (const n of nodes.filter((n) => isLeaf(n.type)).slice(0, MAX_FETCH)) {
       const v = await this.conn.get(n.key);
       const el = this.valueEls.get(n.key);
-      if (el && !el.querySelector("input")) el.textContent = v.error ? "?" : (v.text || "").trim();
+      if (el && !el.querySelector("input")) showValue(el, v.error ? "?" : (v.text || "").trim());
     }
   }
 
@@ -195,9 +205,8 @@ export class DataTree {
     value.appendChild(input);
     input.focus();
     input.select();
-    const done = (text) => (value.textContent = text);
     input.onkeydown = async (ev) => {
-      if (ev.key === "Escape") return done(input.value);
+      if (ev.key === "Escape") return showValue(value, got.error ? "?" : (got.text || "").trim());
       if (ev.key !== "Enter") return;
       const reply = await this.consolePane.run(`set ${top} ${field}=${input.value.trim()}`);
       row.parentElement.querySelectorAll(":scope > .tree-error").forEach((e) => e.remove());
@@ -208,7 +217,8 @@ export class DataTree {
         row.after(err);
       }
       const now = await this.conn.get(node.key);
-      done(now.error ? "?" : (now.text || "").trim());
+      value.textContent = "";
+      showValue(value, now.error ? "?" : (now.text || "").trim());
     };
   }
 

@@ -24,9 +24,8 @@ class Plot {
     this.el.className = "plot";
     this.el.id = `plot-${id}`;
     this.el.innerHTML = `<div class="toolbar"><span class="title">plot ${id}</span>
-      <span class="curves"></span>
       <button id="plot-${id}-csv">csv</button><button id="plot-${id}-png">png</button>
-      <button id="plot-${id}-remove">x</button></div><div class="plot-body"></div>`;
+      <button id="plot-${id}-remove">x</button></div><div class="curves"></div><div class="plot-body"></div>`;
     this.body = this.el.querySelector(".plot-body");
     this.el.querySelector(`#plot-${id}-csv`).onclick = () =>
       download(`plot_${id}.csv`, csvHref(this.csv()));
