@@ -2,6 +2,7 @@
 Chromium (WebGL on SwiftShader) driven by selenium; every wait is bounded."""
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -56,19 +57,25 @@ class ViewProcess:
         self.url = head.split(" ", 1)[1].strip()
 
     def stop(self):
+        """Ctrl-C, as a person ends it; its exit status (killed after 15 s: None)."""
         if self.proc.poll() is None:
-            self.proc.terminate()
+            self.proc.send_signal(signal.SIGINT)
             try:
-                self.proc.wait(10)
+                self.proc.wait(15)
             except subprocess.TimeoutExpired:
                 self.proc.kill()
                 self.proc.wait(5)
+                return None
+        return self.proc.returncode
 
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
-        self.stop()
+    def __exit__(self, exc_type, *exc):
+        code = self.stop()
+        # A clean end matters too: under the sanitizers a leak or error report makes it non-zero.
+        if exc_type is None and code != 0:
+            raise Failure(f"stride view ended with {code} after Ctrl-C: {self.errors[-8:]}")
 
 
 def browser(width=1280, height=860):
