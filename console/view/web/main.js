@@ -49,6 +49,7 @@ const hooks = {
 window.strideView = hooks;
 
 let latestWall = null;
+const fallen = new Set(); // robots whose fall the banner has shown
 let lastShown = ""; // frame/log frame the tree's values were last fetched for
 conn.onState((s) => status.setConnection(s));
 // Nothing is sent before hello: a bridge asking for a token closes on any other first message.
@@ -82,7 +83,11 @@ conn.on("frame", (m) => {
   // Before the first control frame the blackboard is empty: ask again once there is one.
   const empty = !hooks.tree || !(hooks.tree.representations || []).length;
   if (empty && m.frame > 0 && performance.now() - treeAskedAt > 1000) refreshTree();
-  for (const r of m.robots || []) if (r.fell) banner.show("fall", `${r.name} fell at ${m.t.toFixed(2)} s`);
+  for (const r of m.robots || []) {
+    if (r.fell && !fallen.has(r.name)) banner.show("fall", `${r.name} fell at ${m.t.toFixed(2)} s`);
+    if (r.fell) fallen.add(r.name);
+    else fallen.delete(r.name); // up again (a reset): the next fall shows
+  }
 });
 conn.on("tree", (m) => {
   hooks.tree = m;

@@ -44,7 +44,8 @@ export class StatusBar {
   setFrame(frame) {
     $("st-time").textContent = `${frame.t.toFixed(2)} s`;
     $("st-time").dataset.t = frame.t;
-    $("st-frame").textContent = `frame ${frame.frame}`;
+    const inLog = frame.log_frame !== null && frame.log_frame !== undefined;
+    $("st-frame").textContent = inLog ? `log frame ${frame.log_frame}` : `frame ${frame.frame}`;
     this.setRunning(frame.running);
     this.setRealtime(frame.realtime);
     this.dropped = frame.dropped || 0;
