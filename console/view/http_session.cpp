@@ -83,7 +83,9 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
     const std::string_view target(req.target().data(), req.target().size());
     if (beast::websocket::is_upgrade(req) && target.substr(0, target.find('?')) == "/ws") {
       stream_.expires_never();
-      return start_ws_session(s_, std::move(stream_), std::move(req), std::move(count_));
+      // Frames a page sent right behind its request are in buffer_: the session reads them first.
+      return start_ws_session(s_, std::move(stream_), std::move(req),
+                              beast::buffers_to_string(buffer_.data()), std::move(count_));
     }
     const bool last = !req.keep_alive();
     write(answer(s_.options.roots, req), last);

@@ -61,10 +61,11 @@ class ConnectionCount {
 void start_http_session(ServerState& state, boost::asio::ip::tcp::socket socket,
                         ConnectionCount count);
 
-// Takes over a connection whose request asks for the WebSocket.
+// Takes over a connection whose request asks for the WebSocket; `received` are the bytes that
+// came after the request.
 void start_ws_session(ServerState& state, boost::beast::tcp_stream stream,
                       boost::beast::http::request<boost::beast::http::string_body> request,
-                      ConnectionCount count);
+                      std::string received, ConnectionCount count);
 
 // Queues `text` for a joined page (frame: may be dropped). Server thread only.
 void queue_for(WsSession& session, std::string text, bool frame);

@@ -1,5 +1,6 @@
 #include "console/view/view_message.hpp"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "robot/core/error.hpp"
@@ -16,6 +17,21 @@ constexpr std::size_t kMaxKey = 256;
 
 [[noreturn]] void fail(const std::string& what) {
   throw Error("ws message: " + what);
+}
+
+// Control characters (a tab aside) would break the one-line errors and replies that echo text.
+bool has_control(std::string_view s) {
+  return std::any_of(s.begin(), s.end(), [](char c) {
+    return (static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f;
+  });
+}
+
+// A page's word for an error line: at most 32 bytes, control characters as '?'.
+std::string printable(std::string_view word) {
+  std::string out(word.substr(0, 32));
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return out;
 }
 
 // Nesting deeper than kMaxDepth is refused before parsing (bounded work on any input).
@@ -52,7 +68,7 @@ std::string text_member(const Json& m, const char* name, std::size_t max) {
   const std::string& s = v.get_ref<const std::string&>();
   if (s.size() > max)
     fail(std::string("\"") + name + "\" longer than " + std::to_string(max) + " characters");
-  if (s.find('\0') != std::string::npos) fail(std::string("\"") + name + "\" holds a NUL");
+  if (has_control(s)) fail(std::string("\"") + name + "\" holds a control character");
   return s;
 }
 
@@ -77,8 +93,9 @@ WatchRequest watch(const Json& m) {
   WatchRequest w;
   for (const Json& k : keys) {
     if (!k.is_string() || k.get_ref<const std::string&>().empty() ||
-        k.get_ref<const std::string&>().size() > kMaxKey)
-      fail("\"keys\" should hold non-empty strings of at most " + std::to_string(kMaxKey) +
+        k.get_ref<const std::string&>().size() > kMaxKey ||
+        has_control(k.get_ref<const std::string&>()))
+      fail("\"keys\" should hold non-empty one-line strings of at most " + std::to_string(kMaxKey) +
            " characters");
     w.keys.push_back(k.get<std::string>());
   }
@@ -97,15 +114,14 @@ ViewRequest decode_view_message(std::string_view text) {
     fail("expected \"op\" (cmd, watch, tree, get, auth)");
   const std::string& op = op_it->get_ref<const std::string&>();
   if (op == "cmd") {
-    CmdRequest c{id_member(m), text_member(m, "line", kMaxLine)};
-    if (c.line.find_first_of("\r\n") != std::string::npos) fail("\"line\" should be one line");
+    const CmdRequest c{id_member(m), text_member(m, "line", kMaxLine)};
     return c;
   }
   if (op == "watch") return watch(m);
   if (op == "tree") return TreeRequest{};
   if (op == "get") return GetRequest{id_member(m), text_member(m, "key", kMaxKey)};
   if (op == "auth") return AuthRequest{hex_member(m, "nonce"), hex_member(m, "proof")};
-  fail("unknown op \"" + op.substr(0, 32) + "\" (expected cmd, watch, tree, get, auth)");
+  fail("unknown op \"" + printable(op) + "\" (expected cmd, watch, tree, get, auth)");
 }
 
 }  // namespace stride::view

@@ -3,6 +3,7 @@
 #include <boost/beast/core.hpp>
 #include <boost/beast/websocket.hpp>
 #include <deque>
+#include <sstream>
 #include <variant>
 
 #include "console/view/server_state.hpp"
@@ -40,15 +41,20 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
     s_.post_event({ClientEvent::Kind::Left, id_, "", false});
   }
 
-  void accept(http::request<http::string_body> req) {
+  void accept(http::request<http::string_body> req, std::string received) {
     boost::system::error_code ignored;
     beast::get_lowest_layer(ws_).socket().set_option(
         boost::asio::socket_base::send_buffer_size(s_.options.send_buffer), ignored);
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.read_message_max(s_.options.max_message);
-    ws_.async_accept(req, [self = shared_from_this()](beast::error_code ec) {
-      if (!ec) self->on_accept();
-    });
+    // The request again with what followed it: Beast reads the frames among them after it.
+    std::ostringstream raw;
+    raw << req;
+    handshake_ = raw.str() + received;
+    ws_.async_accept(boost::asio::buffer(handshake_),
+                     [self = shared_from_this()](beast::error_code ec) {
+                       if (!ec) self->on_accept();
+                     });
   }
 
   void queue(std::string text, bool frame) {
@@ -177,15 +183,17 @@ class WsSession : public std::enable_shared_from_this<WsSession> {
   std::size_t frames_queued_ = 0;
   std::uint64_t dropped_ = 0;
   std::uint64_t id_ = 0;
-  std::string nonce_;  // hex; empty: no token needed
+  std::string nonce_;      // hex; empty: no token needed
+  std::string handshake_;  // the upgrade request and the bytes after it
   bool joined_ = false, writing_ = false, closing_ = false;
   std::optional<websocket::close_code> pending_close_;
 };
 
 void start_ws_session(ServerState& state, beast::tcp_stream stream,
-                      http::request<http::string_body> request, ConnectionCount count) {
+                      http::request<http::string_body> request, std::string received,
+                      ConnectionCount count) {
   std::make_shared<WsSession>(state, std::move(stream), std::move(count))
-      ->accept(std::move(request));
+      ->accept(std::move(request), std::move(received));
 }
 
 void queue_for(WsSession& session, std::string text, bool frame) {
