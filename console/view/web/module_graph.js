@@ -3,7 +3,13 @@
 // whose selects run `mr <Rep> <Module>`.
 
 const SVG = "http://www.w3.org/2000/svg";
-const BOX_W = 128, BOX_H = 30, GAP_X = 12, GAP_Y = 26;
+const BOX_W = 128, BOX_H = 40, OFF_H = 17, GAP_X = 12, GAP_Y = 26;
+
+// Time per frame, in the unit that reads: 0.38 us, 12.5 us, 0.41 ms.
+function formatMs(ms) {
+  if (typeof ms !== "number") return "";
+  return ms >= 0.1 ? `${ms.toFixed(2)} ms` : `${(ms * 1000).toFixed(ms >= 0.01 ? 0 : 2)} \u00b5s`;
+}
 
 function svg(tag, attrs, parent) {
   const el = document.createElementNS(SVG, tag);
@@ -47,27 +53,28 @@ export class ModuleGraph {
     const providerOf = new Map((msg.representations || []).map((r) => [r.name, r.provider]));
     const active = new Set(providerOf.values());
     const mods = msg.modules || [];
-    const on = mods.filter((m) => active.has(m.name) || !(m.provides || []).length);
+    const on = mods.filter((m) => active.has(m.name)); // the rest provide nothing: not running
     const off = mods.filter((m) => !on.includes(m));
     this.draw(on, off, providerOf);
     this.providers(msg.representations || []);
   }
 
-  // Positions: a row per layer (wrapping when wide), then the inactive modules last.
+  // Positions: a row per layer (wrapping when wide), then the modules not running, smaller.
   place(on, off, providerOf) {
     const perRow = Math.max(1, Math.floor((this.svg.clientWidth || 420) / (BOX_W + GAP_X)));
     const layer = layers(on, providerOf);
-    const rows = [];
-    const maxLayer = Math.max(-1, ...layer.values());
-    for (let l = 0; l <= maxLayer; l++) {
-      const inLayer = on.filter((m) => layer.get(m.name) === l);
-      for (let i = 0; i < inLayer.length; i += perRow) rows.push(inLayer.slice(i, i + perRow));
-    }
-    for (let i = 0; i < off.length; i += perRow) rows.push(off.slice(i, i + perRow));
     const pos = new Map();
-    rows.forEach((row, r) =>
-      row.forEach((m, c) => pos.set(m.name, { x: 4 + c * (BOX_W + GAP_X), y: 4 + r * (BOX_H + GAP_Y) })));
-    return { pos, height: 8 + rows.length * (BOX_H + GAP_Y) };
+    let y = 4;
+    const rowsOf = (mods, h, gap) => {
+      for (let i = 0; i < mods.length; i += perRow) {
+        mods.slice(i, i + perRow).forEach((m, c) => pos.set(m.name, { x: 4 + c * (BOX_W + GAP_X), y, h }));
+        y += h + gap;
+      }
+    };
+    const maxLayer = Math.max(-1, ...layer.values());
+    for (let l = 0; l <= maxLayer; l++) rowsOf(on.filter((m) => layer.get(m.name) === l), BOX_H, GAP_Y);
+    rowsOf(off, OFF_H, 4);
+    return { pos, height: y + 4 };
   }
 
   draw(on, off, providerOf) {
@@ -79,24 +86,30 @@ export class ModuleGraph {
       for (const rep of m.requires || []) {
         const from = pos.get(providerOf.get(rep)), to = pos.get(m.name);
         if (!from || !to || from === to) continue;
-        const x1 = from.x + BOX_W / 2, y1 = from.y + BOX_H, x2 = to.x + BOX_W / 2, y2 = to.y;
+        const x1 = from.x + BOX_W / 2, y1 = from.y + from.h, x2 = to.x + BOX_W / 2, y2 = to.y;
         const e = svg("path", { class: "edge", d: `M${x1},${y1} C${x1},${y1 + 18} ${x2},${y2 - 18} ${x2},${y2}` }, this.svg);
         svg("title", {}, e).textContent = rep;
       }
-    for (const m of [...on, ...off]) {
-      const p = pos.get(m.name);
-      const g = svg("g", { class: on.includes(m) ? "module" : "module inactive", transform: `translate(${p.x},${p.y})` }, this.svg);
-      g.dataset.module = m.name;
-      svg("rect", { width: BOX_W, height: BOX_H, rx: 4 }, g);
-      svg("text", { x: 4, y: 12 }, g).textContent = m.name.length > 22 ? `${m.name.slice(0, 21)}.` : m.name;
-      const ms = svg("text", { x: 4, y: 25, class: "module-ms" }, g);
-      ms.textContent = m.ms != null ? `${m.ms.toFixed(3)} ms` : "";
+    for (const m of [...on, ...off]) this.box(m, pos.get(m.name), on.includes(m));
+  }
+
+  // A module's box: its name, what it provides and its time per frame (running ones).
+  box(m, p, running) {
+    const g = svg("g", { class: running ? "module" : "module inactive", transform: `translate(${p.x},${p.y})` }, this.svg);
+    g.dataset.module = m.name;
+    svg("rect", { width: BOX_W, height: p.h, rx: 4 }, g);
+    const cut = (t, n) => (t.length > n ? `${t.slice(0, n - 1)}.` : t);
+    svg("text", { x: 4, y: 12 }, g).textContent = cut(m.name, 22);
+    if (running) {
+      svg("text", { x: 4, y: 23, class: "module-provides" }, g).textContent = cut(`> ${(m.provides || []).join(", ")}`, 24);
+      const ms = svg("text", { x: 4, y: 35, class: "module-ms" }, g);
+      ms.textContent = formatMs(m.ms);
       this.msEls.set(m.name, ms);
-      const detail = `${m.name}${on.includes(m) ? "" : " (not running)"}\nrequires: ${(m.requires || []).join(", ") || "-"}\n` +
-        `provides: ${(m.provides || []).join(", ") || "-"}`;
-      svg("title", {}, g).textContent = detail;
-      g.addEventListener("click", () => (this.detail.textContent = detail));
     }
+    const detail = `${m.name}${running ? "" : " (not running)"}\nrequires: ${(m.requires || []).join(", ") || "-"}\n` +
+      `provides: ${(m.provides || []).join(", ") || "-"}`;
+    svg("title", {}, g).textContent = detail;
+    g.addEventListener("click", () => (this.detail.textContent = detail));
   }
 
   providers(reps) {
@@ -104,6 +117,10 @@ export class ModuleGraph {
     for (const r of reps) {
       const tr = this.table.insertRow();
       tr.insertCell().textContent = r.name;
+      if (!r.provider && !(r.available || []).length) {
+        tr.insertCell().textContent = "(built in)"; // the runtime's own: nothing to choose
+        continue;
+      }
       const sel = document.createElement("select");
       sel.className = "provider-select";
       sel.dataset.rep = r.name;
@@ -124,7 +141,7 @@ export class ModuleGraph {
   setTimes(times) {
     for (const [name, ms] of Object.entries(times || {})) {
       const el = this.msEls.get(name);
-      if (el && typeof ms === "number") el.textContent = `${ms.toFixed(3)} ms`;
+      if (el) el.textContent = formatMs(ms);
     }
   }
 }
