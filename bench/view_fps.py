@@ -50,7 +50,8 @@ def main():
             lat = d.execute_script(f"return strideView.latencies.slice({a['lat']})")
             console(d, "pause")
         wall = (b["t"] - a["t"]) / 1000
-        print(f"scene {args.scene}, {wall:.1f} s wall, {b['sim'] - a['sim']:.2f} s simulated, 4 plots x 5 curves")
+        print(f"scene {args.scene}, {wall:.1f} s wall, {b['sim'] - a['sim']:.2f} s simulated, 4 plots x 5 curves; "
+              f"host load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs (the GPU is SwiftShader: CPU)")
         print(f"page draws: {(b['draws'] - a['draws']) / wall:.1f} fps (target >= 30); "
               f"requestAnimationFrame {(b['raf'] - a['raf']) / wall:.1f}/s; "
               f"frame messages {(b['frames'] - a['frames']) / wall:.1f}/s; dropped {b['dropped'] - a['dropped']}")

@@ -66,16 +66,22 @@ conn.on("scene", (m) => {
   hooks.scene = m;
   view.setScene(m);
 });
-conn.on("frame", (m) => {
-  hooks.frame = m;
-  hooks.framesReceived++;
+// Samples are kept from every frame message; what is drawn only from the last one before each
+// animation frame (messages may come faster than the page draws).
+let pendingFrame = null;
+function showFrame(m) {
   view.setFrame(m);
   overlays.update(m);
   status.setFrame(m);
   player.setFrame(m);
-  store.addFrame(m);
   graph.setTimes(m.times);
   if (m.log_frame !== null && m.log_frame !== undefined) plots.setCursor(m.t);
+}
+conn.on("frame", (m) => {
+  hooks.frame = m;
+  hooks.framesReceived++;
+  pendingFrame = m;
+  store.addFrame(m);
   if (typeof m.wall === "number") latestWall = m.wall;
   const shown = `${m.frame}/${m.log_frame}`;
   if (!m.running && shown !== lastShown) tree.refetchVisible(); // a step or a log frame
@@ -169,6 +175,8 @@ hooks.drawMs = { view: 0, plots: 0 };
 function tick() {
   hooks.rafTicks++;
   const t0 = performance.now();
+  if (pendingFrame) showFrame(pendingFrame);
+  pendingFrame = null;
   view.draw();
   const t1 = performance.now();
   plots.draw();
