@@ -5,7 +5,7 @@ import sys
 
 import png_pixels
 from selenium.webdriver.common.by import By
-from view_harness import ViewProcess, check, main, open_page, save_screenshot, wait_js
+from view_harness import ViewProcess, check, console, main, open_page, save_screenshot, screenshot_dir, wait_js
 
 MIN_PIXELS = 150  # of each side's colour in the robot's box (a standing NAO shows thousands)
 
@@ -34,7 +34,7 @@ def count_sides(png, box, scale):
 
 
 def test(stride, d):
-    with ViewProcess(stride, ["scenes/nao_stand.xml"]) as view:
+    with ViewProcess(stride, ["scenes/nao_stand_controlled.xml"]) as view:
         open_page(d, view.url)
         check(d.execute_script("return strideView.hello.mode") == "sim", "hello mode is not sim")
         links = d.execute_script("return strideView.scene.robots[0].links.length")
@@ -53,7 +53,12 @@ def test(stride, d):
         for box_id in ["ov-com", "ov-zmp", "ov-cop", "ov-support"]:
             d.find_element(By.ID, box_id).click()
         d.find_element(By.ID, "view-follow").click()
-        save_screenshot(d, "view_standing.png")
+        if screenshot_dir():  # the README picture: the tree's representations open
+            console(d, "step 1")
+            d.find_element(By.ID, "tree-refresh").click()
+            wait_js(d, "document.querySelector('#tree .tree-group .tree-row')", 10, "the tree")
+            d.find_element(By.CSS_SELECTOR, "#tree .tree-group .tree-row").click()
+            save_screenshot(d, "view_standing.png")
 
 
 if __name__ == "__main__":

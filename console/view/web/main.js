@@ -29,6 +29,7 @@ const plots = new PlotPanel(store, $("plots"));
 const watches = new Watches($("watches"), store, conn);
 const tree = new DataTree({ container: $("tree"), filter: $("tree-filter"), conn, consolePane, watches, plots });
 let treeAskedAt = 0;
+let treeRetries = 0;
 const refreshTree = () => {
   treeAskedAt = performance.now();
   conn.send({ op: "tree" });
@@ -88,7 +89,10 @@ conn.on("frame", (m) => {
   lastShown = shown;
   // Before the first control frame the blackboard is empty: ask again once there is one.
   const empty = !hooks.tree || !(hooks.tree.representations || []).length;
-  if (empty && m.frame > 0 && performance.now() - treeAskedAt > 1000) refreshTree();
+  if (empty && m.frame > 0 && treeRetries < 3 && performance.now() - treeAskedAt > 1000) {
+    treeRetries++; // a scene without a controller never has a tree: do not ask forever
+    refreshTree();
+  }
   for (const r of m.robots || []) {
     if (r.fell && !fallen.has(r.name)) banner.show("fall", `${r.name} fell at ${m.t.toFixed(2)} s`);
     if (r.fell) fallen.add(r.name);
