@@ -13,6 +13,7 @@ namespace stride::view_test {
 namespace {
 
 const std::string kToken = "view-test-token-0123456789";
+const std::string kReadOnly = "view-read-only-0123456789";
 
 std::string hex(std::string_view bytes) {
   static constexpr char digits[] = "0123456789abcdef";
@@ -27,7 +28,7 @@ class ViewToken : public ::testing::Test {
     dir_ = test_support::fresh_path("view", "token_file");
     std::filesystem::create_directories(dir_);
     const auto file = dir_ / "tokens";
-    std::ofstream(file) << "# the view test's\n" << kToken << "\n";
+    std::ofstream(file) << "# the view test's\n" << kToken << "\nread-only " << kReadOnly << "\n";
     ::chmod(file.c_str(), 0600);
     view_ = std::make_unique<ViewProcess>(
         std::vector<std::string>{scene_path("nao_stand.xml"), "--token-file", file.string()},
@@ -38,23 +39,47 @@ class ViewToken : public ::testing::Test {
   std::unique_ptr<ViewProcess> view_;
 };
 
-TEST_F(ViewToken, TheRightProofJoinsAndTheServerProvesItKnowsTheToken) {
-  WsClient page(view_->port());
+// Proves `token` on a fresh page; returns the auth_ok message (null if none came).
+Json prove(WsClient& page, const std::string& token) {
   const Json auth = page.read_type("auth");
-  ASSERT_TRUE(auth.is_object());
+  if (!auth.is_object()) return nullptr;
   const std::string server_nonce = auth["nonce"];
-  ASSERT_EQ(server_nonce.size(), 64u);
+  EXPECT_EQ(server_nonce.size(), 64u);
   const std::string client_nonce = hex(debug::random_nonce());
   const std::string proof =
-      hex(debug::keyed_hash(kToken, "stride-view-1 client" + server_nonce + client_nonce));
+      hex(debug::keyed_hash(token, "stride-view-1 client" + server_nonce + client_nonce));
   page.send(Json{{"op", "auth"}, {"nonce", client_nonce}, {"proof", proof}}.dump());
-  const Json ok = page.read_type("auth_ok");
+  Json ok = page.read_type("auth_ok");
+  if (ok.is_object())
+    EXPECT_EQ(ok["proof"],
+              hex(debug::keyed_hash(token, "stride-view-1 server" + server_nonce + client_nonce)));
+  return ok;
+}
+
+TEST_F(ViewToken, TheRightProofJoinsAndTheServerProvesItKnowsTheToken) {
+  WsClient page(view_->port());
+  const Json ok = prove(page, kToken);
   ASSERT_TRUE(ok.is_object());
-  EXPECT_EQ(ok["proof"],
-            hex(debug::keyed_hash(kToken, "stride-view-1 server" + server_nonce + client_nonce)));
   EXPECT_EQ(ok["read_only"], false);
   EXPECT_TRUE(page.read_type("hello").is_object());
   EXPECT_EQ(command(page, 1, "step 5")["ok"], true);
+}
+
+TEST_F(ViewToken, AReadOnlyTokenGetsButDoesNotCommand) {
+  WsClient page(view_->port());
+  const Json ok = prove(page, kReadOnly);
+  ASSERT_TRUE(ok.is_object());
+  EXPECT_EQ(ok["read_only"], true);
+  const Json step = command(page, 1, "step 5");
+  EXPECT_EQ(step["ok"], false);
+  EXPECT_EQ(step["error"], "step: this page's token is read-only");
+  const Json get = command(page, 2, "get sim.time");
+  EXPECT_EQ(get["ok"], true) << get.dump();
+  EXPECT_NE(get["output"].get<std::string>().find("0"), std::string::npos) << get.dump();
+  page.send(R"({"op":"get","id":3,"key":"sim.time"})");
+  const Json value = page.read_type("value");
+  EXPECT_EQ(value["id"], 3);
+  EXPECT_EQ(value["text"], "0");
 }
 
 TEST_F(ViewToken, AWrongProofOrAnotherMessageFirstIsClosedWith1008) {
