@@ -51,8 +51,11 @@ def screenshot_scrubbed(d):
         tree_button(d, f"representation:JointSensorData.position[{side}KneePitch]", "tree-plot")
     for k in range(K - 160, K + 1, 4):
         scrub(d, k)
+    d.find_element(By.CSS_SELECTOR, f'#watches .watch[data-key="{JOINTS}"] button').click()
     d.find_element(By.ID, "tree-filter").clear()
-    d.find_element(By.ID, "tree-filter").send_keys("position[")
+    d.find_element(By.ID, "tree-filter").send_keys("JointSensorData.position[")
+    wait_js(d, "![...document.querySelectorAll('#tree .tree-value')].slice(0, 24).some(e => e.textContent === '.')",
+            10, "the tree's values fetched")
     save_screenshot(d, "view_log.png")
 
 
@@ -71,7 +74,7 @@ def test(stride, d):
             tree_button(d, TIME, "tree-plot")
             for k in [K - 40, K - 20, K]:
                 scrub(d, k)
-            check(d.find_element(By.ID, "log-frame").text.startswith(f"{K} /"), "the player's label")
+            wait_js(d, f"document.getElementById('log-frame').textContent.startsWith('{K} /')", 5, "the player's label")
             sel = f'#watches .watch[data-key="{JOINTS}"] .watch-value'
             wait_js(d, f"document.querySelector('{sel}').textContent === {expected!r}", 10,
                     f"the watched joint angles at frame {K} as `get` prints them ({expected[:60]}...)")

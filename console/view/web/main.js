@@ -6,6 +6,7 @@ import { ConsolePane } from "./console_pane.js";
 import { DataTree } from "./data_tree.js";
 import { DebugList } from "./debug_list.js";
 import { LogPlayer } from "./log_player.js";
+import { LogSampler } from "./log_sampler.js";
 import { ModuleGraph } from "./module_graph.js";
 import { Overlays } from "./overlays.js";
 import { Picking } from "./picking.js";
@@ -37,6 +38,7 @@ const refreshTree = () => {
 const graph = new ModuleGraph($("module-graph"), $("module-detail"), $("providers"), consolePane, refreshTree);
 const debugList = new DebugList($("debug-list"), consolePane);
 const player = new LogPlayer(conn);
+const logSampler = new LogSampler(conn, store, (t) => plots.setCursor(t));
 
 // Test and bench hooks: what the page received and drew.
 const hooks = {
@@ -44,7 +46,7 @@ const hooks = {
   framesReceived: 0,
   rafTicks: 0,
   latencies: [], // ms from the bridge stepping a frame to the page drawing it
-  view, conn, consolePane, store, plots, tree, player, picking, overlays,
+  view, conn, consolePane, store, plots, tree, player, picking, overlays, logSampler,
   robotScreenBox: (i) => view.robotScreenBox(i),
 };
 window.strideView = hooks;
@@ -76,13 +78,15 @@ function showFrame(m) {
   status.setFrame(m);
   player.setFrame(m);
   graph.setTimes(m.times);
-  if (m.log_frame !== null && m.log_frame !== undefined) plots.setCursor(m.t);
 }
 conn.on("frame", (m) => {
   hooks.frame = m;
   hooks.framesReceived++;
   pendingFrame = m;
   store.addFrame(m);
+  const rows = m.samples && m.samples.rows;
+  if (m.log_frame !== null && m.log_frame !== undefined && rows && rows.length) plots.setCursor(rows[rows.length - 1][0]);
+  logSampler.onFrame(m);
   if (typeof m.wall === "number") latestWall = m.wall;
   const shown = `${m.frame}/${m.log_frame}`;
   if (!m.running && shown !== lastShown) tree.refetchVisible(); // a step or a log frame
