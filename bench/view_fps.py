@@ -7,10 +7,14 @@ median latency < 50 ms on loopback. A bench script, not a test.
 
 usage: bench/view_fps.py <path to stride> [--seconds S] [--scene file]"""
 import argparse
+import json
 import os
 import statistics
 import sys
+import threading
 import time
+
+import websocket  # python3-websocket
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "view_browser"))
 from view_harness import ViewProcess, browser, console, open_page, wait_js  # noqa: E402
@@ -21,9 +25,39 @@ JOINTS = ["HeadYaw", "LHipPitch", "LKneePitch", "LAnklePitch", "LHipRoll", "RHip
 KEYS = ["representation:FrameInfo.time"] + [f"representation:JointSensorData.position[{j}]" for j in JOINTS]
 
 
+class FrameListener:
+    """A second WebSocket client of the bridge noting when each frame (by seq) arrives: the bridge
+    sends one frame to every page at once, so a page's draw time minus this is the latency from
+    the bridge sending a frame to the page showing it (python3-websocket, loopback)."""
+
+    def __init__(self, url):
+        self.arrived = {}
+        self.ws = websocket.create_connection(url.replace("http://", "ws://").rstrip("/") + "/ws", timeout=5)
+        self.stop = False
+        self.thread = threading.Thread(target=self.read, daemon=True)
+        self.thread.start()
+
+    def read(self):
+        while not self.stop:
+            try:
+                text = self.ws.recv()
+            except Exception:  # closed or timed out: the bench is over
+                return
+            now = time.time() * 1000
+            if not text:
+                return
+            msg = json.loads(text)
+            if msg.get("type") == "frame":
+                self.arrived[msg["seq"]] = now
+
+    def close(self):
+        self.stop = True
+        self.ws.close()
+
+
 def counters(d):
     return d.execute_script("""const v = strideView;
-        return {t: performance.now(), raf: v.rafTicks, draws: v.view.draws, frames: v.framesReceived,
+        return {t: performance.now(), t0: Date.now(), raf: v.rafTicks, draws: v.view.draws, frames: v.framesReceived,
                 lat: v.latencies.length, sim: v.frame.t, dropped: v.frame.dropped || 0,
                 view_ms: v.drawMs.view, plots_ms: v.drawMs.plots};""")
 
@@ -41,6 +75,7 @@ def main():
             for p in range(4):
                 d.execute_script("const p = strideView.plots.addPlot();"
                                  "for (const k of arguments[0]) p.addCurve(k);", KEYS[5 * p:5 * p + 5])
+            listener = FrameListener(view.url)
             console(d, "realtime on")
             console(d, "run")
             wait_js(d, "strideView.frame.running && strideView.frame.t > 0.5", 30, "the walk running")
@@ -48,7 +83,10 @@ def main():
             time.sleep(args.seconds)
             b = counters(d)
             lat = d.execute_script(f"return strideView.latencies.slice({a['lat']})")
+            drawn = d.execute_script("return strideView.drawn")
             console(d, "pause")
+            listener.close()
+        sent = [t - listener.arrived[seq] for seq, t in drawn if seq in listener.arrived and t >= a["t0"]]
         wall = (b["t"] - a["t"]) / 1000
         print(f"scene {args.scene}, {wall:.1f} s wall, {b['sim'] - a['sim']:.2f} s simulated, 4 plots x 5 curves; "
               f"host load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs (the GPU is SwiftShader: CPU)")
@@ -64,7 +102,12 @@ def main():
                   f"p90 {lat[int(0.9 * (len(lat) - 1))]:.1f} ms, max {lat[-1]:.1f} ms over {len(lat)} draws "
                   "(target median < 50 ms)")
         else:
-            print("latency: no frame carried a wall stamp")
+            print("latency from the simulation step: no frame carried a wall stamp (PROTOCOL.md `wall`)")
+        if sent:
+            sent.sort()
+            print(f"latency frame sent -> drawn: median {statistics.median(sent):.1f} ms, "
+                  f"p90 {sent[int(0.9 * (len(sent) - 1))]:.1f} ms over {len(sent)} draws "
+                  "(a second client's arrival time for the same frame as the start)")
     finally:
         d.quit()
     return 0

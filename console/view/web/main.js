@@ -46,6 +46,7 @@ const hooks = {
   framesReceived: 0,
   rafTicks: 0,
   latencies: [], // ms from the bridge stepping a frame to the page drawing it
+  drawn: [], // [frame seq, Date.now()] of each draw that showed a new frame
   view, conn, consolePane, store, plots, tree, player, picking, overlays, logSampler,
   robotScreenBox: (i) => view.robotScreenBox(i),
 };
@@ -72,7 +73,9 @@ conn.on("scene", (m) => {
 // Samples are kept from every frame message; what is drawn only from the last one before each
 // animation frame (messages may come faster than the page draws).
 let pendingFrame = null;
+let shownSeq = null; // the seq of the frame the next draw shows
 function showFrame(m) {
+  shownSeq = m.seq;
   view.setFrame(m);
   overlays.update(m);
   status.setFrame(m);
@@ -168,6 +171,9 @@ for (const tab of document.querySelectorAll(".tabs button")) {
 }
 
 view.afterDraw.push(() => {
+  if (shownSeq !== null) hooks.drawn.push([shownSeq, Date.now()]);
+  if (hooks.drawn.length > 5000) hooks.drawn.splice(0, 1000);
+  shownSeq = null;
   if (latestWall === null) return;
   hooks.latencies.push(Date.now() - latestWall);
   if (hooks.latencies.length > 5000) hooks.latencies.splice(0, 1000);
