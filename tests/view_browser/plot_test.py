@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """A plot of representation:FrameInfo.time, made from the data tree's "+plot", receives samples
 while the simulation runs: every sample's value is its own control frame's time, one period
-apart; the plot's CSV export holds what it shows."""
+apart; the plot's CSV export holds what it shows, its PNG export the curve in its colour."""
+import base64
 import sys
 
+import png_pixels
 from selenium.webdriver.common.by import By
 from view_harness import (ViewProcess, check, console, main, open_page, save_screenshot,
                           screenshot_dir, tree_button, wait_js)
@@ -41,10 +43,22 @@ def test(stride, d):
         for line, x in zip(csv[1:], drawn):
             a, b = (float(v) for v in line.split(","))
             check(a == x and abs(a - b) < 1e-9, f"CSV row {line!r} for the plot's t {x}")
+        png_check(d)
         d.find_element(By.ID, "plot-pause").click()
         print(f"{n} samples, period {period} s, CSV {len(csv) - 1} rows as the plot shows them")
         if screenshot_dir():
             screenshot_mid_walk(d)
+
+
+def png_check(d):
+    """The PNG export: the plot's canvas with the curve's name above it, the curve in its colour."""
+    url, width = d.execute_script("const p = strideView.plots.plots[0]; return [p.png(), p.u.ctx.canvas.width];")
+    check(url.startswith("data:image/png;base64,"), f"PNG export gave {url[:40]!r}")
+    image = png_pixels.decode(base64.b64decode(url.split(",", 1)[1]))
+    check(image.width == width, f"PNG {image.width} px wide, the plot's canvas {width}")
+    blue = sum(1 for y in range(image.height) for x in range(0, image.width, 2)
+               if image.pixel(x, y) == (0x2F, 0x6F, 0xD0))
+    check(blue > 50, f"only {blue} pixels of the curve's colour in the PNG")
 
 
 def screenshot_mid_walk(d):
