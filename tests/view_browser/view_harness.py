@@ -83,6 +83,7 @@ def browser(width=1280, height=860):
     for f in CHROMIUM_FLAGS + [f"--window-size={width},{height}"]:
         opts.add_argument(f)
     opts.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
+    opts.set_capability("goog:loggingPrefs", {"browser": "SEVERE"})
     service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
     d = webdriver.Chrome(service=service, options=opts)
     d.set_page_load_timeout(30)
@@ -157,6 +158,9 @@ def main(test):
     d = browser()
     try:
         test(stride, d)
+        # An exception the page did not catch fails the test, whatever else passed.
+        uncaught = [e["message"] for e in d.get_log("browser") if "Uncaught" in e.get("message", "")]
+        check(not uncaught, f"uncaught in the page: {uncaught[:3]}")
     except Failure as e:
         print(f"FAIL: {e}")
         for entry in d.get_log("browser")[-10:]:
