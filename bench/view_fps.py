@@ -59,7 +59,7 @@ def counters(d):
     return d.execute_script("""const v = strideView;
         return {t: performance.now(), t0: Date.now(), raf: v.rafTicks, draws: v.view.draws, frames: v.framesReceived,
                 lat: v.latencies.length, sim: v.frame.t, dropped: v.frame.dropped || 0,
-                view_ms: v.drawMs.view, plots_ms: v.drawMs.plots};""")
+                view_ms: v.drawMs.view, plots_ms: v.drawMs.plots, scale: v.renderScale.scale};""")
 
 
 def main():
@@ -78,7 +78,8 @@ def main():
             listener = FrameListener(view.url)
             console(d, "realtime on")
             console(d, "run")
-            wait_js(d, "strideView.frame.running && strideView.frame.t > 0.5", 30, "the walk running")
+            # Measured from 3 s on: the walk under way and the page's resolution settled.
+            wait_js(d, "strideView.frame.running && strideView.frame.t > 3", 30, "the walk running")
             a = counters(d)
             time.sleep(args.seconds)
             b = counters(d)
@@ -92,7 +93,8 @@ def main():
               f"host load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs (the GPU is SwiftShader: CPU)")
         print(f"page draws: {(b['draws'] - a['draws']) / wall:.1f} fps (target >= 30); "
               f"requestAnimationFrame {(b['raf'] - a['raf']) / wall:.1f}/s; "
-              f"frame messages {(b['frames'] - a['frames']) / wall:.1f}/s; dropped {b['dropped'] - a['dropped']}")
+              f"frame messages {(b['frames'] - a['frames']) / wall:.1f}/s; dropped {b['dropped'] - a['dropped']}; "
+              f"3D resolution scale {a['scale']} -> {b['scale']}")
         ticks = max(1, b["raf"] - a["raf"])
         print(f"per animation frame: 3D view {(b['view_ms'] - a['view_ms']) / ticks:.1f} ms, "
               f"plots {(b['plots_ms'] - a['plots_ms']) / ticks:.1f} ms (JS side; the GPU process draws after)")

@@ -143,6 +143,7 @@ def screenshot_dir():
 def save_screenshot(d, name):
     out = screenshot_dir()
     if out:
+        wait_js(d, "strideView.renderScale.scale === 1 && !strideView.view.dirty", 5, "a sharp still picture")
         path = os.path.join(out, name)
         d.save_screenshot(path)
         print(f"wrote {path}")

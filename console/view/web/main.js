@@ -11,6 +11,7 @@ import { ModuleGraph } from "./module_graph.js";
 import { Overlays } from "./overlays.js";
 import { Picking } from "./picking.js";
 import { PlotPanel } from "./plots.js";
+import { RenderScale } from "./render_scale.js";
 import { SampleStore } from "./sample_store.js";
 import { SceneView } from "./scene_view.js";
 import { Banner, StatusBar } from "./status_bar.js";
@@ -23,6 +24,7 @@ const consolePane = new ConsolePane(conn, $("console-in"), $("console-out"));
 const status = new StatusBar(consolePane);
 const banner = new Banner();
 const view = new SceneView($("scene-canvas"));
+const renderScale = new RenderScale(view);
 const overlays = new Overlays(view.scene);
 const picking = new Picking(view, consolePane);
 const store = new SampleStore(conn);
@@ -47,7 +49,7 @@ const hooks = {
   rafTicks: 0,
   latencies: [], // ms from the bridge stepping a frame to the page drawing it
   drawn: [], // [frame seq, Date.now()] of each draw that showed a new frame
-  view, conn, consolePane, store, plots, tree, player, picking, overlays, logSampler,
+  view, conn, consolePane, store, plots, tree, player, picking, overlays, logSampler, renderScale,
   robotScreenBox: (i) => view.robotScreenBox(i),
 };
 window.strideView = hooks;
@@ -191,7 +193,7 @@ function tick() {
   const t0 = performance.now();
   if (pendingFrame) showFrame(pendingFrame);
   pendingFrame = null;
-  view.draw();
+  renderScale.tick(view.draw());
   const t1 = performance.now();
   plots.draw();
   hooks.drawMs.view += t1 - t0;
