@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""A plot of representation:FrameInfo.time, made from the data tree's "+plot", receives samples
-while the simulation runs: every sample's value is its own control frame's time, one period
-apart; the plot's CSV export holds what it shows, its PNG export the curve in its colour."""
+"""A plot of representation:FrameInfo.time, made from the data tree's "+plot" (and .frame dragged
+onto it), receives samples while the simulation runs: every sample's value is its own control
+frame's time, one period apart, the frame counts up by one; the plot's CSV export holds what it shows, its PNG export the curve in its colour."""
 import base64
 import sys
 
@@ -11,6 +11,7 @@ from view_harness import (ViewProcess, check, console, main, open_page, save_scr
                           screenshot_dir, tree_button, wait_js)
 
 KEY = "representation:FrameInfo.time"
+FRAME = "representation:FrameInfo.frame"
 KNEES = ["representation:JointSensorData.position[LKneePitch]",
          "representation:JointSensorData.position[RKneePitch]"]
 
@@ -21,6 +22,8 @@ def test(stride, d):
         wait_js(d, "strideView.tree", 20, "the tree message")
         tree_button(d, KEY, "tree-plot")
         wait_js(d, f"document.querySelector('#plot-1[data-keys=\"{KEY}\"]')", 5, "plot 1 with the key")
+        drag_to_plot(d, FRAME, 1)
+        wait_js(d, f"document.querySelector('#plot-1').dataset.keys === '{KEY} {FRAME}'", 5, "plot 1 with both keys")
         d.find_element(By.ID, "btn-run").click()
         wait_js(d, "document.getElementById('st-state').dataset.running === '1'", 10, "running")
         n = wait_js(d, "strideView.store.t.length >= 100 && strideView.store.t.length", 40,
@@ -33,21 +36,37 @@ def test(stride, d):
             check(vi is not None and abs(vi - ti) < 1e-9, f"sample {i}: FrameInfo.time {vi} at t {ti}")
             if i:
                 check(abs(ti - t[i - 1] - period) < 1e-6, f"samples {i - 1},{i} not one period apart: {t[i - 1]}, {ti}")
+        frames = d.execute_script(f"return strideView.store.cols.get('{FRAME}')")
+        check(all(b - a == 1 for a, b in zip(frames, frames[1:])), f"FrameInfo.frame not counting up by one: {frames[:8]}")
         wait_js(d, "strideView.plots.plots[0].u.data[0].length >= 50", 10, "the plot drew 50 samples")
         d.find_element(By.ID, "plot-pause").click()  # what is shown stays put for the export
         drawn, csv = d.execute_script("const p = strideView.plots.plots[0];"
                                       "return [p.u.data[0], p.csv()];")
         csv = csv.splitlines()
-        check(csv[0] == f"t,{KEY}", f"CSV header {csv[0]!r}")
+        check(csv[0] == f"t,{KEY},{FRAME}", f"CSV header {csv[0]!r}")
         check(len(csv) - 1 == len(drawn), f"CSV rows {len(csv) - 1}, plot shows {len(drawn)}")
         for line, x in zip(csv[1:], drawn):
-            a, b = (float(v) for v in line.split(","))
+            a, b, _ = (float(v) for v in line.split(","))
             check(a == x and abs(a - b) < 1e-9, f"CSV row {line!r} for the plot's t {x}")
         png_check(d)
         d.find_element(By.ID, "plot-pause").click()
         print(f"{n} samples, period {period} s, CSV {len(csv) - 1} rows as the plot shows them")
         if screenshot_dir():
             screenshot_mid_walk(d)
+
+
+def drag_to_plot(d, key, plot):
+    """Drags a tree node onto a plot (HTML drag and drop, its events made in the page: WebDriver's
+    own mouse cannot start one)."""
+    tree_filter = d.find_element(By.ID, "tree-filter")
+    tree_filter.clear()
+    tree_filter.send_keys(key)
+    wait_js(d, f"document.querySelector('.tree-node[data-key=\"{key}\"] .tree-name')", 10, f"{key} in the tree")
+    d.execute_script("""const src = document.querySelector(`.tree-node[data-key="${arguments[0]}"] .tree-name`);
+        const dst = document.getElementById(`plot-${arguments[1]}`), dt = new DataTransfer();
+        src.dispatchEvent(new DragEvent("dragstart", {dataTransfer: dt, bubbles: true}));
+        dst.dispatchEvent(new DragEvent("dragover", {dataTransfer: dt, bubbles: true, cancelable: true}));
+        dst.dispatchEvent(new DragEvent("drop", {dataTransfer: dt, bubbles: true, cancelable: true}));""", key, plot)
 
 
 def png_check(d):
