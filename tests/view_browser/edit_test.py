@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """A module parameter edited in place in the data tree reads back through the console pane's
-`get`; a bad value shows the one-line error beside the field and changes nothing."""
+`get`; a bad value shows the one-line error beside the field and changes nothing; a
+representation's field edited in place is held (its provider's output overridden) frames later."""
 import sys
 
 from selenium.webdriver.common.by import By
@@ -9,21 +10,22 @@ from view_harness import ViewProcess, check, console, main, open_page, wait_js
 
 KEY = "module:PatternWalk.start_delay"
 VALUE_SEL = f'.tree-node[data-key="{KEY}"] .tree-value'
+HELD = "representation:JointRequest.position[HeadYaw]"
 
 
-def edit(d, text):
+def edit(d, text, value_sel=VALUE_SEL):
     """Clicks the value, waits for its input, types text + Enter; the set command's result."""
     before = d.execute_script("return strideView.consolePane.count")
-    d.find_element(By.CSS_SELECTOR, VALUE_SEL).click()
-    wait_js(d, f"document.querySelector('{VALUE_SEL} input')", 10, "the edit box")
-    box = d.find_element(By.CSS_SELECTOR, f"{VALUE_SEL} input")
+    d.find_element(By.CSS_SELECTOR, value_sel).click()
+    wait_js(d, f"document.querySelector('{value_sel} input')", 10, "the edit box")
+    box = d.find_element(By.CSS_SELECTOR, f"{value_sel} input")
     box.send_keys(Keys.CONTROL, "a")
     box.send_keys(text, Keys.ENTER)
     cid = f"con-{before + 1}"
     state = wait_js(d, f"document.getElementById('{cid}') && document.getElementById('{cid}').dataset.done",
                     15, "the set command's reply")
     line = d.execute_script(f"return document.getElementById('{cid}').textContent")
-    wait_js(d, f"!document.querySelector('{VALUE_SEL} input')", 10, "the edit box closed")
+    wait_js(d, f"!document.querySelector('{value_sel} input')", 10, "the edit box closed")
     return state, line
 
 
@@ -49,7 +51,24 @@ def test(stride, d):
         check("\n" not in err.strip() and "start_delay" in err, f"the error is not one line naming the field: {err!r}")
         state, text = console(d, f"get {KEY}")
         check(text.strip() == "1.75", f"a refused edit changed the value: {text!r}")
-        print(f"start_delay {original.strip()} -> 1.75 (read back); 'soon' refused: {err}")
+        held_representation(d)
+        print(f"start_delay {original.strip()} -> 1.75 (read back); 'soon' refused: {err}; {HELD} held at 0.3")
+
+
+def held_representation(d):
+    """A representation's field edited in place is held over its provider's output, frame after frame."""
+    console(d, "step 1")  # the blackboard holds the representations
+    d.find_element(By.ID, "tree-refresh").click()
+    tree_filter = d.find_element(By.ID, "tree-filter")
+    tree_filter.clear()
+    tree_filter.send_keys(HELD)
+    sel = f'.tree-node[data-key="{HELD}"] .tree-value'
+    wait_js(d, f"document.querySelector('{sel}')", 15, f"{HELD} in the tree")
+    state, line = edit(d, "0.3", sel)
+    check(state == "ok" and line == "> set representation:JointRequest position[HeadYaw]=0.3", f"the edit sent {line!r}")
+    console(d, "step 3")
+    state, text = console(d, f"get {HELD}")
+    check(state == "ok" and float(text) == 0.3, f"get {HELD} three frames after the edit: {text!r}")
 
 
 if __name__ == "__main__":
