@@ -1,0 +1,74 @@
+#!/usr/bin/env python3
+"""Mode remote: `stride view --connect` to a robot runtime's debug server (here a `stride run
+--debug` walking in real time, as a NAO would): the page draws the robot from what the bridge
+sends (both side colours on screen, the feet below the torso) and a plot follows the robot's
+FrameInfo.time as the robot's own clock runs."""
+import subprocess
+import sys
+import threading
+
+from selenium.webdriver.common.by import By
+from side_colours import MIN_PIXELS, count_sides
+from view_harness import SOURCE_DIR, ViewProcess, check, main, open_page, tree_button, wait_js
+
+KEY = "representation:FrameInfo.time"
+
+
+class Robot:
+    """`stride run <walk> --debug 127.0.0.1:0`: its first line names the debug server's port."""
+
+    def __init__(self, stride, seconds=60):
+        self.proc = subprocess.Popen([stride, "run", "scenes/walking/open_loop_medium.xml", "--seconds", str(seconds),
+                                      "--debug", "127.0.0.1:0"], cwd=SOURCE_DIR, stdout=subprocess.PIPE,
+                                     stderr=subprocess.DEVNULL, text=True)
+        self.first = None
+        got = threading.Event()
+
+        def read():
+            for line in self.proc.stdout:
+                if self.first is None:
+                    self.first = line
+                    got.set()
+            got.set()
+
+        threading.Thread(target=read, daemon=True).start()
+        got.wait(30)
+        check(self.first and self.first.startswith("debug server on 127.0.0.1:"), f"robot said {self.first!r}")
+        self.at = self.first.split()[3]
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            self.proc.wait(10)
+
+
+def test(stride, d):
+    robot = Robot(stride)
+    try:
+        with ViewProcess(stride, ["--connect", robot.at]) as view:
+            open_page(d, view.url)
+            check(d.execute_script("return strideView.hello.mode") == "remote", "hello mode is not remote")
+            wait_js(d, "strideView.frame.robots?.[0]?.links?.length > 10", 20, "the robot's link poses in a frame")
+            wait_js(d, "strideView.tree?.representations?.length > 0", 20, "the robot's tree")
+            tree_button(d, KEY, "tree-plot")
+            samples = wait_js(d, f"strideView.store.t.length >= 50 && strideView.store.cols.get('{KEY}')", 30,
+                              "50 samples from the robot")
+            check(all(b > a for a, b in zip(samples, samples[1:])), "the robot's clock does not run forward")
+            links = d.execute_script("return strideView.frame.robots[0].links")
+            torso_z, foot_z = links[0][2], min(p[2] for p in links)
+            check(torso_z - foot_z > 0.2, f"torso at z {torso_z}, lowest link at {foot_z}: not a standing body")
+            d.find_element(By.ID, "view-front").click()
+            d.find_element(By.ID, "btn-pause").click()  # stop following: a still picture
+            wait_js(d, "!strideView.frame.running", 15, "paused")
+            box = wait_js(d, "strideView.robotScreenBox(0)", 10, "the robot's box on screen")
+            wait_js(d, "strideView.renderScale.scale === 1 && !strideView.view.dirty", 5, "a sharp still picture")
+            blue, orange = count_sides(d.get_screenshot_as_png(), box, d.execute_script("return window.devicePixelRatio"))
+            check(blue >= MIN_PIXELS and orange >= MIN_PIXELS, f"{blue} blue, {orange} orange pixels of the remote robot")
+            print(f"remote robot at {robot.at}: {len(samples)} samples, torso {torso_z:.3f} m over its lowest link "
+                  f"{foot_z:.3f} m; {blue} blue, {orange} orange pixels")
+    finally:
+        robot.stop()
+
+
+if __name__ == "__main__":
+    sys.exit(main(test))
