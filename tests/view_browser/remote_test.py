@@ -2,7 +2,7 @@
 """Mode remote: `stride view --connect` to a robot runtime's debug server (here a `stride run
 --debug` walking in real time, as a NAO would): the page draws the robot from what the bridge
 sends (both side colours on screen, the feet below the torso) and a plot follows the robot's
-FrameInfo.time as the robot's own clock runs."""
+FrameInfo.time as the robot's own clock runs; the robot gone, the banner says the link is lost."""
 import subprocess
 import sys
 import threading
@@ -64,8 +64,15 @@ def test(stride, d):
             wait_js(d, "strideView.renderScale.scale === 1 && !strideView.view.dirty", 5, "a sharp still picture")
             blue, orange = count_sides(d.get_screenshot_as_png(), box, d.execute_script("return window.devicePixelRatio"))
             check(blue >= MIN_PIXELS and orange >= MIN_PIXELS, f"{blue} blue, {orange} orange pixels of the remote robot")
+            d.find_element(By.ID, "btn-run").click()  # following the robot again
+            wait_js(d, "strideView.frame.running", 15, "following the robot")
+            robot.stop()  # the robot goes away: the page says so at once
+            kind = wait_js(d, "!document.getElementById('banner').hidden && document.getElementById('banner').dataset.kind",
+                           15, "the banner after the robot went away")
+            check(kind == "link_lost", f"banner kind {kind!r} after the robot went away")
             print(f"remote robot at {robot.at}: {len(samples)} samples, torso {torso_z:.3f} m over its lowest link "
-                  f"{foot_z:.3f} m; {blue} blue, {orange} orange pixels")
+                  f"{foot_z:.3f} m; {blue} blue, {orange} orange pixels; gone: "
+                  f"{d.find_element(By.ID, 'banner-text').text}")
     finally:
         robot.stop()
 
