@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A module parameter edited in place in the data tree reads back through the console pane's
 `get`; a bad value shows the one-line error beside the field and changes nothing; a
-representation's field edited in place is held (its provider's output overridden) frames later."""
+representation's field edited in place is held (its provider's output overridden) frames later; the
+console pane's input line recalls what was typed (up/down)."""
 import sys
 
 from selenium.webdriver.common.by import By
@@ -52,7 +53,19 @@ def test(stride, d):
         state, text = console(d, f"get {KEY}")
         check(text.strip() == "1.75", f"a refused edit changed the value: {text!r}")
         held_representation(d)
+        history(d)
         print(f"start_delay {original.strip()} -> 1.75 (read back); 'soon' refused: {err}; {HELD} held at 0.3")
+
+
+def history(d):
+    """The console pane's input line recalls the lines typed, newest first, and back down."""
+    box = d.find_element(By.ID, "console-in")
+    box.send_keys(Keys.ARROW_UP)
+    check(box.get_attribute("value") == f"get {HELD}", f"up once: {box.get_attribute('value')!r}")
+    box.send_keys(Keys.ARROW_UP)
+    check(box.get_attribute("value") == "step 3", f"up twice: {box.get_attribute('value')!r}")
+    box.send_keys(Keys.ARROW_DOWN, Keys.ARROW_DOWN)
+    check(box.get_attribute("value") == "", f"down past the newest: {box.get_attribute('value')!r}")
 
 
 def held_representation(d):
