@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """A plot of representation:FrameInfo.time, made from the data tree's "+plot" (and .frame dragged
 onto it), receives samples while the simulation runs: every sample's value is its own control
-frame's time, one period apart, the frame counts up by one; the plot's CSV export holds what it shows, its PNG export the curve in its colour."""
+frame's time, one period apart, the frame counts up by one; a 0.5 s window shows 0.5 s; the plot's CSV export holds what it shows, its PNG export the curve in its colour."""
 import base64
 import sys
 
 import png_pixels
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from view_harness import (ViewProcess, check, console, main, open_page, save_screenshot,
                           screenshot_dir, tree_button, wait_js)
 
@@ -50,6 +51,15 @@ def test(stride, d):
             check(a == x and abs(a - b) < 1e-9, f"CSV row {line!r} for the plot's t {x}")
         png_check(d)
         d.find_element(By.ID, "plot-pause").click()
+        window = d.find_element(By.ID, "plot-window")
+        window.clear()
+        window.send_keys("0.5", Keys.TAB)  # a half-second window: the plot shows the last 0.5 s
+        span = wait_js(d, "(() => { const x = strideView.plots.plots[0].u.data[0];"
+                          " return x.length > 10 && x[x.length - 1] - x[0] <= 0.5 + 1e-9 && x[x.length - 1] - x[0]; })()",
+                       10, "the plot's window at 0.5 s")
+        check(span >= 0.5 - 2 * period, f"a 0.5 s window shows {span} s")
+        window.clear()
+        window.send_keys("10", Keys.TAB)
         print(f"{n} samples, period {period} s, CSV {len(csv) - 1} rows as the plot shows them")
         if screenshot_dir():
             screenshot_mid_walk(d)
