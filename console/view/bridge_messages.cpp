@@ -192,14 +192,23 @@ void ViewBridge::send_frame_if_due(bool force) {
   last_steps_ = steps;
   last_running_ = running;
   if (server_.clients() == 0) return void(rows_.clear());
+  check_events();
   server_.broadcast_frame(dump(frame(true)));
 }
 
-void ViewBridge::check_fall() {
+void ViewBridge::check_events() {
   sim::Simulation* s = local_simulation(interpreter_);
   const bool fell = s && s->robot_count() > 0 && s->robot(0).fallen();
   if (fell && !fell_) event("fall", s->robot(0).name() + " fell");
   fell_ = fell;
+  const Runtime* rt = s ? interpreter_.local().session().runtime(0) : nullptr;
+  const std::size_t faults = rt ? rt->module_faults().size() : 0;
+  for (std::size_t i = std::min(faults_, faults); i < faults; ++i) {
+    const Runtime::ModuleFault& f = rt->module_faults()[i];
+    event("module_fault",
+          f.module + " failed at frame " + std::to_string(f.frame) + ": " + f.message);
+  }
+  faults_ = faults;
 }
 
 Json ViewBridge::tree() {

@@ -71,7 +71,6 @@ void ViewBridge::poll() {
         break;
     }
   }
-  check_fall();
   send_frame_if_due(false);
   const auto now = std::chrono::steady_clock::now();
   if (now - last_status_ > std::chrono::seconds(2) && server_.clients() > 0) {

@@ -72,7 +72,7 @@ class ViewBridge {
   int steps_per_frame();
   void sample();
   void send_frame_if_due(bool force);
-  void check_fall();
+  void check_events();  // fall, module faults
 
   console::Interpreter& interpreter_;
   std::ostream& out_;
@@ -86,6 +86,7 @@ class ViewBridge {
   std::uint64_t last_steps_ = ~std::uint64_t{0};  // steps at the last frame sent
   bool last_running_ = false;
   bool fell_ = false;
+  std::size_t faults_ = 0;  // module faults already told
   std::chrono::steady_clock::time_point last_status_{};
   std::unique_ptr<model::RobotModel> shipped_model_;  // a remote robot's (the shipped NAO)
   std::size_t log_frames_ = 0;

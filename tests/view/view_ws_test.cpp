@@ -90,5 +90,26 @@ TEST_F(ViewWs, WatchedTimeComesBackIncreasingWhileRunning) {
   EXPECT_NE(error["error"].get<std::string>().find("robot.name"), std::string::npos);
 }
 
+TEST_F(ViewWs, AFallIsAnEventAndTheFrameSaysSo) {
+  WsClient page(view_->port());
+  ASSERT_TRUE(page.read_type("frame").is_object());
+  ASSERT_EQ(command(page, 1, "push torso 150 0 0 0.2")["ok"], true);
+  page.send(R"({"op":"cmd","id":2,"line":"step 3000"})");  // events come while it runs
+  bool fell = false;
+  Json event;
+  const auto end = std::chrono::steady_clock::now() + 20s;
+  while ((!fell || event.is_null()) && std::chrono::steady_clock::now() < end) {
+    const auto text = page.read(10s);
+    ASSERT_TRUE(text.has_value());
+    const Json m = Json::parse(*text);
+    if (m["type"] == "event" && m["kind"] == "fall") event = m;
+    if (m["type"] == "frame" && m["robots"][0]["fell"] == true) fell = true;
+  }
+  EXPECT_TRUE(fell);
+  ASSERT_TRUE(event.is_object());
+  EXPECT_EQ(event["text"], "nao fell");
+  EXPECT_GT(event["t"].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace stride::view_test
