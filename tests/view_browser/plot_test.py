@@ -94,6 +94,7 @@ def screenshot_mid_walk(d):
     """The README picture: 5 s into the walk from a reset, every overlay on, knee angles plotted."""
     console(d, "reset")
     wait_js(d, "strideView.frame.t < 0.5", 10, "the reset")
+    d.find_element(By.CSS_SELECTOR, f'#plot-1 .curve-x[data-key="{FRAME}"]').click()  # time alone: its scale
     d.find_element(By.ID, "plot-add").click()
     for k in KNEES:
         tree_button(d, k, "tree-plot")
