@@ -75,6 +75,7 @@ void LocalTarget::select_robot(const std::string& name) {
 
 void LocalTarget::load(const std::string& scene_path) {
   auto fresh = std::make_unique<SimSession>(scene_path);  // the old session stays on error
+  detach_server();
   session_ = std::move(fresh);
   selected_ = served_ = 0;
   stepping_wall_ = 0;
@@ -84,6 +85,7 @@ void LocalTarget::load(const std::string& scene_path) {
 }
 
 void LocalTarget::reset() {
+  detach_server();
   session().reset();
   stepping_wall_ = 0;
   swapped_.clear();
@@ -342,9 +344,14 @@ const debug::Endpoint& LocalTarget::serve(debug::ServerOptions options) {
 
 void LocalTarget::stop_serving() {
   if (!server_) return;
-  if (session_ && served_ < session_->simulation().robot_count())
-    if (Runtime* rt = session_->runtime(served_)) rt->set_frame_boundary(nullptr);
+  detach_server();
   server_.reset();
+}
+
+void LocalTarget::detach_server() {
+  // The served runtime is about to go: the server lets go of it first (a client's log stops).
+  if (server_ && session_ && served_ < session_->simulation().robot_count())
+    if (Runtime* rt = session_->runtime(served_)) rt->set_frame_boundary(nullptr);
 }
 
 void LocalTarget::attach_server() {

@@ -76,6 +76,7 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   void serve_idle();
 
  private:
+  void detach_server();
   void attach_server();
   Runtime& runtime();
   sim::SimulatedRobot& robot();  // the selected one; throws without robots

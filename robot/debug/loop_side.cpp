@@ -135,15 +135,27 @@ void LoopSide::write_log() {
   try {
     log_->write_frame();
   } catch (const Error& e) {
-    LoopReply note;
-    note.client = log_client_;
-    note.op = Op::LogStop;
-    note.text = "log '" + log_file_ + "' stopped after " + std::to_string(log_->frames_written()) +
-                " frames: " + e.what();
-    pending_note_ = std::move(note);
-    log_.reset();  // the frames written so far stay readable
-    log_file_.clear();
+    end_log(e.what());
   }
+}
+
+void LoopSide::end_log(const std::string& why) {
+  LoopReply note;
+  note.client = log_client_;
+  note.op = Op::LogStop;
+  note.text = "log '" + log_file_ + "' stopped after " + std::to_string(log_->frames_written()) +
+              " frames: " + why;
+  pending_note_ = std::move(note);  // sent at the next boundary
+  log_.reset();                     // the frames written so far stay readable
+  log_file_.clear();
+}
+
+void LoopSide::detached(Runtime& runtime) {
+  if (&runtime != runtime_) return;
+  runtime_ = nullptr;  // a runtime made later at the same address still gets a fresh catalogue
+  frame_info_ = nullptr;
+  slots_.clear();
+  if (log_) end_log("the robot's controller was replaced (reset or load)");
 }
 
 bool LoopSide::push_note() {

@@ -28,6 +28,8 @@ class LoopSide final : public FrameBoundary {
   // console), so it is also kept for take_kept_debug_output().
   LoopSide(Exchange& exchange, std::string robot_name, bool keep_debug_output = false);
   void after_frame(Runtime& runtime) override { service(runtime, true); }
+  // A client's log of that runtime stops (told with a note); the next runtime gets a catalogue.
+  void detached(Runtime& runtime) override;
   // Between frames while the loop is paused (a console's `serve` while it is not running).
   void idle(Runtime& runtime) { service(runtime, false); }
 
@@ -47,6 +49,7 @@ class LoopSide final : public FrameBoundary {
   bool push_catalogue();
   void start_log(Runtime& rt, const LoopRequest& in);
   void write_log();
+  void end_log(const std::string& why);
   bool push_note();
 
   Exchange& x_;

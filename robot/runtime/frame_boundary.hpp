@@ -11,6 +11,9 @@ class FrameBoundary {
  public:
   virtual ~FrameBoundary() = default;
   virtual void after_frame(Runtime& runtime) = 0;
+  // The runtime was given another boundary (or none, before it is destroyed): whatever this
+  // boundary holds of it (pointers into its blackboard) must be let go.
+  virtual void detached(Runtime& /*runtime*/) {}
 };
 
 }  // namespace stride

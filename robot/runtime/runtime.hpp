@@ -98,8 +98,12 @@ class Runtime {
   // line; "" while logging or after a log stopped on request. The frames before stay readable.
   const std::string& log_stopped() const { return log_stopped_; }
 
-  // Called at the end of every step (nullptr: none). Not owned.
-  void set_frame_boundary(FrameBoundary* boundary) { boundary_ = boundary; }
+  // Called at the end of every step (nullptr: none). Not owned. The boundary it replaces is told
+  // (FrameBoundary::detached): set nullptr before destroying a runtime a boundary outlives.
+  void set_frame_boundary(FrameBoundary* boundary) {
+    if (boundary_ && boundary_ != boundary) boundary_->detached(*this);
+    boundary_ = boundary;
+  }
   // Counts re-plans: the blackboard may have new representations after one.
   std::uint64_t plan_generation() const { return plan_generation_; }
   // Puts frame `frame` of a log onto the blackboard (for `log goto`); returns the names skipped

@@ -21,6 +21,7 @@ class TimedBoundary final : public FrameBoundary {
     last_ns = ns;
     if (ns > longest_ns.load()) longest_ns = ns;
   }
+  void detached(Runtime& rt) override { inner_.detached(rt); }
   std::atomic<std::int64_t> longest_ns{0}, last_ns{0};
 
  private:
