@@ -16,7 +16,6 @@ export class LogSampler {
   onFrame(m) {
     if (m.log_frame === null || m.log_frame === undefined) return;
     if (m.samples && m.samples.rows && m.samples.rows.length) return; // the bridge sampled it
-    if (this.store.keys().length === 0) return;
     this.wanted = m.log_frame;
     this.pump();
   }
@@ -32,8 +31,8 @@ export class LogSampler {
     const t = Number(replies[0].text);
     if (!replies[0].error && Number.isFinite(t)) {
       const row = [t, ...replies.slice(1).map((r) => (r.error ? null : Number(r.text)))];
-      this.store.addFrame({ log_frame: k, samples: { keys, rows: [row] } });
-      this.onSampled(t);
+      if (keys.length) this.store.addFrame({ log_frame: k, samples: { keys, rows: [row] } });
+      this.onSampled(t); // the frame's own time, for the plots' cursor and the status line
     }
     this.busy = false;
     this.pump();

@@ -40,7 +40,10 @@ const refreshTree = () => {
 const graph = new ModuleGraph($("module-graph"), $("module-detail"), $("providers"), consolePane, refreshTree);
 const debugList = new DebugList($("debug-list"), consolePane);
 const player = new LogPlayer(conn);
-const logSampler = new LogSampler(conn, store, (t) => plots.setCursor(t));
+const logSampler = new LogSampler(conn, store, (t) => {
+  plots.setCursor(t);
+  status.setLogTime(t);
+});
 
 // Test and bench hooks: what the page received and drew.
 const hooks = {

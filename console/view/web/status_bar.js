@@ -8,6 +8,7 @@ export class StatusBar {
     this.consolePane = consolePane;
     this.realtime = false;
     this.dropped = 0;
+    this.logT = null; // the shown log frame's time, read by the page (see log_sampler.js)
     $("btn-run").onclick = () => consolePane.run("run");
     $("btn-pause").onclick = () => consolePane.run("pause");
     $("btn-step").onclick = () => consolePane.run("step 1");
@@ -42,14 +43,22 @@ export class StatusBar {
   }
 
   setFrame(frame) {
-    $("st-time").textContent = `${frame.t.toFixed(2)} s`;
-    $("st-time").dataset.t = frame.t;
     const inLog = frame.log_frame !== null && frame.log_frame !== undefined;
+    const t = inLog && this.logT !== null ? this.logT : frame.t;
+    $("st-time").textContent = `${t.toFixed(2)} s`;
+    $("st-time").dataset.t = t;
     $("st-frame").textContent = inLog ? `log frame ${frame.log_frame}` : `frame ${frame.frame}`;
     this.setRunning(frame.running);
     this.setRealtime(frame.realtime);
     this.dropped = frame.dropped || 0;
     $("st-dropped").textContent = `${this.dropped} dropped`;
+  }
+
+  // A log frame's own time (its FrameInfo.time), when the frame message does not carry it.
+  setLogTime(t) {
+    this.logT = t;
+    $("st-time").textContent = `${t.toFixed(2)} s`;
+    $("st-time").dataset.t = t;
   }
 
   // The bridge's status: frames dropped for all pages together.
