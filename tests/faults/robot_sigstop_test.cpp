@@ -2,6 +2,8 @@
 // a console connected to the robot's debug server while it streams. Documented outcome: a
 // stopped LoLA is a silent link (reported within a frame, the command held, "back" when it
 // resumes); a stopped console costs the control loop nothing.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "tests/faults/fault_support.hpp"
@@ -33,9 +35,11 @@ TEST(RobotSigstop, StoppedSimulatorIsASilentLinkAndTheLoopResumesWithIt) {
   ASSERT_EQ(robot.wait_for(10), 2) << robot.err();  // the simulator ended: the link is gone
   const std::string err = robot.err(), out = robot.out(), json = test::read_file(report);
   ASSERT_NE(err.find("LoLA link silent"), std::string::npos) << err;
-  const auto back = err.find("LoLA link back after ");
-  ASSERT_NE(back, std::string::npos) << err;
-  const double gap_ms = std::stod(err.substr(back + 21));
+  // The longest silence: a simulator slower than the wall clock (ASan) adds short ones.
+  double gap_ms = 0;
+  for (auto back = err.find("LoLA link back after "); back != std::string::npos;
+       back = err.find("LoLA link back after ", back + 1))
+    gap_ms = std::max(gap_ms, std::stod(err.substr(back + 21)));
   EXPECT_GE(gap_ms, 250.0) << err;
   EXPECT_LT(gap_ms, 1000.0) << err;
   EXPECT_NE(err.find("no LoLA link for "), std::string::npos) << err;
