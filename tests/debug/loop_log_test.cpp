@@ -80,7 +80,7 @@ TEST(DebugLoopLog, AServingConsolesResetAndLoadStopAClientsLog) {
   options.log = [](const std::string&) {};
   const debug::Endpoint at = target.serve(options);
   debug::DebugClient client(at, "");
-  for (const std::string& name : {"before_reset.log", "before_load.log"}) {
+  for (const std::string name : {"before_reset.log", "before_load.log"}) {
     // The loop runs only inside advance(): the request is sent, then the loop stepped until the
     // log has frames.
     client.send_only(debug::request(debug::Op::LogStart, name));
