@@ -5,17 +5,16 @@ import math
 import sys
 
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select
-from view_harness import ViewProcess, check, console, main, open_page, wait_js
+from view_harness import ViewProcess, check, choose, console, main, open_page, value_of, wait_js
 
 NAME = "walking:zmp"
 SEL = f'select.dr-select[data-dr="{NAME}"]'
 VALUE = f"debug:{NAME}.zmp_y"
 
 
-def choose(d, state):
+def set_state(d, state):
     n = d.execute_script("return strideView.consolePane.count")
-    Select(d.find_element(By.CSS_SELECTOR, SEL)).select_by_value(state)
+    choose(d, SEL, state)
     cid = f"con-{n + 1}"
     done = wait_js(d, f"document.getElementById('{cid}') && document.getElementById('{cid}').dataset.done", 15,
                    f"the reply to dr {state}")
@@ -33,14 +32,14 @@ def test(stride, d):
         open_page(d, view.url)
         d.find_element(By.ID, "tab-debug").click()
         wait_js(d, f"document.querySelector('{SEL}')", 20, f"{NAME} in the debug list")
-        check(d.find_element(By.CSS_SELECTOR, SEL).get_attribute("value") == "off", f"{NAME} starts off")
+        check(value_of(d, SEL) == "off", f"{NAME} starts off")
         state, text = console(d, f"get {VALUE}")
         check(state == "error" and "switch it on" in text, f"get {VALUE} while off: {state} {text!r}")
-        choose(d, "quiet")
+        set_state(d, "quiet")
         console(d, "step 250", timeout=40)  # the pattern's values exist once the walk starts (2 s)
         state, text = console(d, f"get {VALUE}")
         check(state == "ok" and math.isfinite(float(text)), f"get {VALUE} with the request quiet: {state} {text!r}")
-        choose(d, "off")
+        set_state(d, "off")
         print(f"{NAME}: off -> quiet ({VALUE} = {text.strip()}) -> off")
 
 

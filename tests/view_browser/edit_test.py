@@ -7,7 +7,7 @@ import sys
 
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
-from view_harness import ViewProcess, check, console, main, open_page, wait_js
+from view_harness import ViewProcess, check, console, fresh, main, open_page, wait_js
 
 KEY = "module:PatternWalk.start_delay"
 VALUE_SEL = f'.tree-node[data-key="{KEY}"] .tree-value'
@@ -17,11 +17,14 @@ HELD = "representation:JointRequest.position[HeadYaw]"
 def edit(d, text, value_sel=VALUE_SEL):
     """Clicks the value, waits for its input, types text + Enter; the set command's result."""
     before = d.execute_script("return strideView.consolePane.count")
-    d.find_element(By.CSS_SELECTOR, value_sel).click()
-    wait_js(d, f"document.querySelector('{value_sel} input')", 10, "the edit box")
-    box = d.find_element(By.CSS_SELECTOR, f"{value_sel} input")
-    box.send_keys(Keys.CONTROL, "a")
-    box.send_keys(text, Keys.ENTER)
+    def type_in():
+        d.find_element(By.CSS_SELECTOR, value_sel).click()
+        wait_js(d, f"document.querySelector('{value_sel} input')", 10, "the edit box")
+        box = d.find_element(By.CSS_SELECTOR, f"{value_sel} input")
+        box.send_keys(Keys.CONTROL, "a")
+        box.send_keys(text, Keys.ENTER)
+
+    fresh(type_in, f"edit {value_sel}")
     cid = f"con-{before + 1}"
     state = wait_js(d, f"document.getElementById('{cid}') && document.getElementById('{cid}').dataset.done",
                     15, "the set command's reply")

@@ -5,8 +5,7 @@ message both read back; `mr <Rep> default` returns to the configured one."""
 import sys
 
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select
-from view_harness import ViewProcess, check, console, main, open_page, wait_js
+from view_harness import ViewProcess, check, choose, console, main, open_page, value_of, wait_js
 
 REP = "PostureCorrectedRequest"
 SEL = f'select.provider-select[data-rep="{REP}"]'
@@ -30,12 +29,11 @@ def test(stride, d):
                                  ".map(g => g.dataset.module)")
         check(sorted(names) == sorted(drawn), f"modules {sorted(names)} but drawn {sorted(drawn)}")
         before = provider_in_tree(d)
-        options = Select(d.find_element(By.CSS_SELECTOR, SEL)).options
-        values = [o.get_attribute("value") for o in options]
+        values = d.execute_script("return [...document.querySelector(arguments[0]).options].map(o => o.value)", SEL)
         check(before in values and "HipStrategy" in values, f"providers offered: {values}")
         swap_to = "HipStrategy" if before != "HipStrategy" else "AnkleStrategy"
         n = d.execute_script("return strideView.consolePane.count")
-        Select(d.find_element(By.CSS_SELECTOR, SEL)).select_by_value(swap_to)
+        choose(d, SEL, swap_to)
         wait_js(d, f"document.getElementById('con-{n + 1}') && document.getElementById('con-{n + 1}').dataset.done", 15,
                 "the mr command's reply")
         line = d.execute_script(f"return document.getElementById('con-{n + 1}').textContent")
@@ -44,10 +42,10 @@ def test(stride, d):
         check(state == "ok" and text.strip() == swap_to, f"get provider:{REP} -> {text!r} (wanted {swap_to})")
         wait_js(d, f"strideView.tree.representations.find(r => r.name === '{REP}').provider === '{swap_to}'", 15,
                 "the refreshed tree names the new provider")
-        check(d.find_element(By.CSS_SELECTOR, SEL).get_attribute("value") == swap_to, "the select shows the swap")
+        check(value_of(d, SEL) == swap_to, "the select shows the swap")
         check(d.execute_script(f"return !!document.querySelector('#module-graph g.module[data-module=\"{swap_to}\"]:not(.inactive)')"),
               f"{swap_to} is not drawn active in the graph")
-        Select(d.find_element(By.CSS_SELECTOR, SEL)).select_by_value("default")
+        choose(d, SEL, "default")
         wait_js(d, f"strideView.tree.representations.find(r => r.name === '{REP}').provider === '{before}'", 15,
                 f"mr default returns to {before}")
         print(f"{len(names)} modules drawn; {REP}: {before} -> {swap_to} -> default ({before})")

@@ -9,10 +9,12 @@ import threading
 import time
 
 from selenium import webdriver
+from selenium.common.exceptions import StaleElementReferenceException, WebDriverException
 from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select
 
 CHROMIUM_FLAGS = ["--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--no-sandbox", "--disable-dev-shm-usage"]
@@ -129,7 +131,28 @@ def tree_button(d, key, cls):
     box.send_keys(key)
     sel = f'.tree-node[data-key="{key}"] .{cls}'
     wait_js(d, f"document.querySelector('{sel}')", 10, f"{cls} for {key} in the tree")
-    d.find_element(By.CSS_SELECTOR, sel).click()
+    fresh(lambda: d.find_element(By.CSS_SELECTOR, sel).click(), f"{cls} for {key}")
+
+
+def fresh(action, what):
+    """Runs action() again when the element it used went stale: the page rebuilds its tree and
+    selects when a tree message comes (one may still be on its way after a refresh)."""
+    for _ in range(10):
+        try:
+            return action()
+        except StaleElementReferenceException:
+            time.sleep(0.2)
+    raise Failure(f"{what}: the page kept rebuilding it")
+
+
+def choose(d, css, value):
+    """Picks a select's option."""
+    fresh(lambda: Select(d.find_element(By.CSS_SELECTOR, css)).select_by_value(value), f"choose {value} in {css}")
+
+
+def value_of(d, css):
+    """A form element's value, read in one step in the page."""
+    return d.execute_script("const e = document.querySelector(arguments[0]); return e && e.value;", css)
 
 
 def screenshot_dir():
@@ -162,8 +185,8 @@ def main(test):
         # An exception the page did not catch fails the test, whatever else passed.
         uncaught = [e["message"] for e in d.get_log("browser") if "Uncaught" in e.get("message", "")]
         check(not uncaught, f"uncaught in the page: {uncaught[:3]}")
-    except Failure as e:
-        print(f"FAIL: {e}")
+    except (Failure, WebDriverException) as e:
+        print(f"FAIL: {str(e).splitlines()[0] if str(e) else type(e).__name__}")
         for entry in d.get_log("browser")[-10:]:
             print("browser:", entry.get("message", "")[:300])
         return 1
