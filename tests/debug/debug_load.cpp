@@ -1,6 +1,7 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
 //   debug_load [--seconds S] [--block B] [--clients N] [--fields F] [--scene f]
 //              [--judge all|streams] [--rt-priority 1..99] [--cpu K] [--twin on|off]
+//              [--view on|off]
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
 // to the wall clock, its controller served by a debug server. Quiet blocks (no client) alternate
 // with loaded blocks (N clients each streaming F fields every frame while one more floods garbage
@@ -18,8 +19,9 @@
 // network work of the flood, done where its sockets live, stays off the loop's CPU. --twin on
 // adds a block after each loaded one whose peers load a twin robot's server instead (see Twin):
 // the machine as loaded, this robot with no client; the p99 bound is then judged against those
-// blocks, and the ratio to the quiet blocks is printed beside it. Each step's thread CPU time and
-// the host's steal on the loop's CPU are printed too.
+// blocks, and the ratio to the quiet blocks is printed beside it. --view on loads the robot with
+// the live view instead: `stride view --connect` and a page watching 20 numbers (view_peer.py).
+// Each step's thread CPU time and the host's steal on the loop's CPU are printed too.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -62,6 +64,7 @@ struct Options {
   int rt_priority = 0;  // 0: time-shared
   int cpu = -1;         // -1: any
   bool twin = false;    // also load a twin robot's server (this robot then has no client)
+  bool view = false;    // the load is a live view (stride view + a page), not debug_peers
 };
 
 Options read_options(int argc, char** argv) {
@@ -86,6 +89,8 @@ Options read_options(int argc, char** argv) {
       o.cpu = static_cast<int>(parse_integer(value, "debug_load: --cpu", 0, 1023));
     else if (flag == "--twin" && (value == "on" || value == "off"))
       o.twin = value == "on";
+    else if (flag == "--view" && (value == "on" || value == "off"))
+      o.view = value == "on";
     else
       throw Error("debug_load: unknown flag '" + flag + "'");
   }
@@ -116,11 +121,12 @@ struct Peer {
 
 // Starts a peer on `cpus` (children inherit the starting thread's CPUs), then returns the
 // calling thread to `home`.
+// `program` empty: debug_peer beside this tool.
 Peer spawn_peer(const std::vector<std::string>& args, const std::string& output,
-                const std::vector<int>& cpus, const std::vector<int>& home) {
+                const std::vector<int>& cpus, const std::vector<int>& home, std::string peer = "") {
   if (!cpus.empty()) set_cpu_affinity(cpus, "debug_load: --cpu");
-  const std::string peer =
-      (fs::path(fs::read_symlink("/proc/self/exe")).parent_path() / "debug_peer").string();
+  if (peer.empty())
+    peer = (fs::path(fs::read_symlink("/proc/self/exe")).parent_path() / "debug_peer").string();
   std::vector<std::string> all{peer};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -260,6 +266,7 @@ struct PeerTotals {
   std::int64_t streams = 0, complete = 0;
   std::uint64_t received = 0, dropped = 0, flood_bytes = 0, flood_connections = 0, churned = 0;
   std::string first_failure;
+  std::vector<std::string> views;  // a live view's page: what it received
   void add(const std::string& line) {
     if (line.starts_with("role=honest")) {
       ++streams;
@@ -274,6 +281,9 @@ struct PeerTotals {
       flood_connections += field_of(line, "connections");
     } else if (line.starts_with("role=churn")) {
       churned += field_of(line, "greeted");
+    } else if (line.starts_with("view peer:")) {
+      views.push_back(line);
+      if (line.find("nonzero") != std::string::npos && first_failure.empty()) first_failure = line;
     }
   }
 };
@@ -334,6 +344,15 @@ void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBounda
                       const std::string& at, Condition& c, PeerTotals& totals) {
   std::vector<Peer> peers;
   const std::string peer_seconds = std::to_string(o.block);
+  if (o.view) {  // Debian's python3 has python3-websocket
+    peers.push_back(spawn_peer({STRIDE_SOURCE_DIR "/tests/debug/view_peer.py",
+                                STRIDE_BINARY_DIR "/stride", at, peer_seconds},
+                               (where.dir / "view").string(), where.cpus, where.loop_cpu,
+                               "/usr/bin/python3"));
+    run_block(sim, rt, boundary, server, o.cpu, o.block + 1.0, c);
+    for (const auto& p : peers) totals.add(finish_peer(p));
+    return;
+  }
   for (int i = 0; i < o.clients; ++i)
     peers.push_back(spawn_peer({"honest", at, peer_seconds, field_spec(o.fields), "1"},
                                (where.dir / ("honest" + std::to_string(i))).string(), where.cpus,
@@ -363,9 +382,13 @@ void print_condition(const Condition& c) {
 bool report(const Options& o, const Condition& quiet, const Condition& loaded,
             const Condition& twin, const PeerTotals& t, const debug::DebugServer& server,
             std::uint64_t log_lines) {
-  std::cout << "debug_load: " << o.clients << " clients x " << o.fields
-            << " fields every 12 ms frame, + garbage flood + connect/drop loop, " << o.seconds
-            << " s loaded in blocks of " << o.block << " s between quiet blocks, loop "
+  std::cout << "debug_load: "
+            << (o.view
+                    ? std::string("a live view (stride view --connect, a page watching 20 numbers)")
+                    : std::to_string(o.clients) + " clients x " + std::to_string(o.fields) +
+                          " fields every 12 ms frame, + garbage flood + connect/drop loop")
+            << ", " << o.seconds << " s loaded in blocks of " << o.block
+            << " s between quiet blocks, loop "
             << (o.rt_priority > 0 ? "SCHED_FIFO " + std::to_string(o.rt_priority) : "time-shared")
             << (o.cpu >= 0 ? " on CPU " + std::to_string(o.cpu) + " alone" : "") << "\n";
   std::cout.setf(std::ios::fixed);
@@ -387,6 +410,7 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
             << t.received << " samples received, " << t.dropped << " dropped (counted)\n"
             << "  garbage flood: " << t.flood_bytes << " bytes over " << t.flood_connections
             << " connections; churn: " << t.churned << " connections greeted and dropped\n";
+  for (const auto& v : t.views) std::cout << "  " << v << "\n";
   if (!t.first_failure.empty())
     std::cout << "  first incomplete stream: " << t.first_failure << "\n";
   const auto stats = server.stats();
@@ -394,7 +418,8 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
             << stats.samples_sent << " samples sent, " << stats.samples_dropped << " dropped, "
             << stats.snapshots_lost << " frames missed by the server thread, " << log_lines
             << " log lines\n";
-  const bool streams_ok = t.streams > 0 && t.complete == t.streams;
+  const bool streams_ok = o.view ? !t.views.empty() && t.first_failure.empty()
+                                 : t.streams > 0 && t.complete == t.streams;
   bool ok = streams_ok;
   if (!streams_ok) std::cout << "FAIL: an honest stream is incomplete and not counted\n";
   if (o.judge_timing) {
