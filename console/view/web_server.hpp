@@ -23,7 +23,7 @@ struct WebServerOptions {
   std::size_t max_clients = 32;       // WebSockets; the next is closed with 1013
   std::size_t max_connections = 128;  // TCP connections of any kind; the next is closed at once
   std::size_t max_message = 64 * 1024;
-  std::size_t frame_backlog = 4;       // frames queued for a page before new ones are dropped
+  std::size_t frame_backlog = 16;      // frames queued for a page before new ones are dropped
   std::size_t control_backlog = 4096;  // other messages queued before the page is cut off
   int send_buffer = 128 * 1024;        // a page's socket send buffer: a slow page soon drops frames
   std::chrono::seconds request_timeout{10};  // a connection's time to send a full HTTP request
