@@ -14,7 +14,7 @@ constexpr const char* kScene = "nao_stand_controlled.xml";
 // A TCP connection that upgrades by hand, then writes whatever bytes a test gives it.
 class RawPage {
  public:
-  explicit RawPage(unsigned short port) {
+  explicit RawPage(unsigned short port, bool upgrade = true) {
     bool done = false;
     stream_.expires_after(10s);
     stream_.async_connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), port),
@@ -23,6 +23,7 @@ class RawPage {
                             done = true;
                           });
     run_until(io_, done, 12s);
+    if (!upgrade) return;
     write(
         "GET /ws HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
         "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n");
@@ -112,6 +113,22 @@ TEST_F(ViewHostile, MalformedFramesCloseOnlyTheirConnection) {
     const int code = close_code_in(got);
     EXPECT_TRUE(code == 1002 || code == 1007 || code == 1009) << "frame " << i << " code " << code;
   }
+  still_served(good, 1, 0.01);
+}
+
+TEST_F(ViewHostile, SilentAndOversizedRequestsAreClosed) {
+  WsClient good(view_->port());
+  ASSERT_TRUE(good.read_type("frame").is_object());
+  RawPage silent(view_->port(), false);  // connects and says nothing
+  RawPage huge(view_->port(), false);
+  huge.write("GET / HTTP/1.1\r\nHost: x\r\nX-Big: " + std::string(9000, 'a') + "\r\n\r\n");
+  bool closed = false;
+  EXPECT_EQ(huge.read_all(10s, closed).rfind("HTTP/1.1 431", 0), 0u);
+  EXPECT_TRUE(closed);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_TRUE(silent.read_all(20s, closed).empty());
+  EXPECT_TRUE(closed);  // after the 10 s a connection has to send its request
+  EXPECT_GT(std::chrono::steady_clock::now() - start, 5s);
   still_served(good, 1, 0.01);
 }
 
