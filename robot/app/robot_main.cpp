@@ -7,6 +7,7 @@
 #include "robot/app/stop_signals.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
+#include "robot/core/one_line.hpp"
 #include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 
@@ -56,7 +57,13 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
     err << e.what() << std::endl;
     return kRobotBadInput;
   }
-  const int code = robot->run([&] { return stop.requested(); });
+  int code = kRobotModuleFailed;
+  try {
+    code = robot->run([&] { return stop.requested(); });
+  } catch (
+      const std::exception& e) {  // whatever escaped the loop: one line and the summary, no abort
+    err << "stride robot: the control loop stopped: " << one_line(e.what(), 200) << std::endl;
+  }
   if (stop.signal() != 0)
     err << "stride robot: " << (stop.signal() == SIGINT ? "SIGINT" : "SIGTERM")
         << ": stopped after a complete frame" << std::endl;

@@ -22,7 +22,7 @@ enum RobotExit : int {
   kRobotStopped = 0,       // stopped on request (SIGINT/SIGTERM)
   kRobotBadInput = 1,      // configuration or command-line error: nothing ran
   kRobotLinkLost = 2,      // no LoLA link for longer than the timeout
-  kRobotModuleFailed = 3,  // a module threw and the config says on_module_error="stop"
+  kRobotModuleFailed = 3,  // a module threw and the config says on_module_error="stop", or the loop failed
 };
 
 class RobotProcess {

@@ -109,9 +109,9 @@ bool LolaServer::take_answer(SimulatedRobot& robot, hal::Deadline deadline) {
         ++report_.missed;
         return true;
       }
-      lose_client(robot.latest_sensors().time,
-                  "no answer for " + std::to_string(static_cast<int>(kLockstepAnswerTimeout)) +
-                      " s");
+      lose_client(
+          robot.latest_sensors().time,
+          "no answer for " + std::to_string(static_cast<int>(kLockstepAnswerTimeout)) + " s");
       return true;
     }
     if (wait == hal::UnixSocket::Wait::Interrupted) continue;
@@ -146,9 +146,17 @@ void LolaServer::exchange(SimulatedRobot& robot) {
   }
   if (realtime && !drain_late_answers(robot)) return lose_client(time, "it closed the socket");
   simulated_sensor_packet(robot.latest_sensors(), packet_);
-  if (!client_->send_all(packet_)) return lose_client(time, "it closed the socket");
   const auto deadline =
       realtime ? due + seconds(report_.period) : Clock::now() + seconds(kLockstepAnswerTimeout);
+  // Bounded like the robot's writes: a robot that stopped reading (SIGSTOP) never blocks the world.
+  switch (client_->send_until(packet_, deadline)) {
+    case hal::UnixSocket::Send::Closed:
+      return lose_client(time, "it closed the socket");
+    case hal::UnixSocket::Send::Timeout:
+      return lose_client(time, "it stopped reading");
+    case hal::UnixSocket::Send::Sent:
+      break;
+  }
   if (!take_answer(robot, deadline)) lose_client(time, "it closed the socket");
 }
 

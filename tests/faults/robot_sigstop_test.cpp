@@ -55,6 +55,29 @@ TEST(RobotSigstop, StoppedSimulatorIsASilentLinkAndTheLoopResumesWithIt) {
                             std::to_string(stale) + " owed packets skipped as stale");
 }
 
+// The robot stopped (SIGSTOP) for good while the simulator serves it on the wall clock: once the
+// socket's buffer is full the simulator's sends are bounded too, so it loses the client ("it
+// stopped reading") and ends its run on time instead of blocking in a write.
+TEST(RobotSigstop, StoppedRobotIsALostClientAndTheSimulatorEndsOnTime) {
+  const std::string socket = ChildProcess::scratch("sigstop_robot.sock");
+  const std::string report = ChildProcess::scratch("sigstop_robot.json");
+  ChildProcess sim({test::kStride, "run", test::kHipScene, "--seconds", "4", "--lola", socket,
+                    "--realtime", "--report", report},
+                   "sigstop_robot_sim");
+  ASSERT_TRUE(test::wait_for_file(socket, 60)) << sim.err();
+  ChildProcess robot({test::kStrideRobot, "--config",
+                      test::stand_config("sigstop_robot", "link_timeout=\"1s\""), "--lola", socket},
+                     "sigstop_robot_robot");
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  robot.signal(SIGSTOP);
+  const auto code = sim.wait_for(30);  // 4 s of run; blocked for good before the bound
+  robot.signal(SIGCONT);
+  ASSERT_EQ(code, 0) << sim.err();
+  const std::string json = test::read_file(report), err = sim.err() + sim.out();
+  EXPECT_EQ(std::stoi(test::json_value(json, "clients_lost")), 1) << json;
+  EXPECT_NE(err.find("stopped reading"), std::string::npos) << err;
+}
+
 TEST(RobotSigstop, StoppedConsoleCostsTheControlLoopNothing) {
   test::RobotOnFakeLola r("sigstop_console", "",
                           {"--debug", "127.0.0.1:0", "--log-dir", ChildProcess::scratch("")});
