@@ -38,6 +38,13 @@ sim::Simulation* local_simulation(console::Interpreter& in) {
 }  // namespace
 
 double ViewBridge::time() {
+  if (mode_ == "log" && log_frame_) {  // the shown log frame's own clock
+    try {
+      return parse_number(value("representation:FrameInfo.time"), "time");
+    } catch (const Error&) {
+      return 0;
+    }
+  }
   if (sim::Simulation* s = local_simulation(interpreter_)) return s->time();
   try {
     return parse_number(interpreter_.target().time_text(), "time");
@@ -154,16 +161,20 @@ Json ViewBridge::frame(bool with_samples) {
   }
   if (with_samples) rows_.clear();
   const int spf = std::max(1, steps_per_frame());
-  return {{"type", "frame"},
-          {"seq", seq_++},
-          {"t", time()},
-          {"frame", step_count() / static_cast<std::uint64_t>(spf)},
-          {"running", interpreter_.running()},
-          {"realtime", interpreter_.realtime()},
-          {"log_frame", log_frame_ ? Json(*log_frame_) : Json(nullptr)},
-          {"robots", std::move(robots)},
-          {"samples", {{"keys", watch_keys_}, {"rows", std::move(rows)}}},
-          {"times", module_times()}};
+  return {
+      {"type", "frame"},
+      {"seq", seq_++},
+      {"t", time()},
+      {"frame", step_count() / static_cast<std::uint64_t>(spf)},
+      {"running", interpreter_.running()},
+      {"realtime", interpreter_.realtime()},
+      {"log_frame", log_frame_ ? Json(*log_frame_) : Json(nullptr)},
+      {"wall", std::chrono::duration<double, std::milli>(
+                   last_step_wall_.value_or(std::chrono::system_clock::now()).time_since_epoch())
+                   .count()},
+      {"robots", std::move(robots)},
+      {"samples", {{"keys", watch_keys_}, {"rows", std::move(rows)}}},
+      {"times", module_times()}};
 }
 
 void ViewBridge::sample() {

@@ -33,7 +33,10 @@ void ViewBridge::note_log_command(const std::string& line, const std::string& ou
   std::string log, verb, arg;
   words >> log >> verb >> arg;
   try {
-    if (verb == "goto") log_frame_ = static_cast<std::size_t>(std::stoull(arg));
+    if (verb == "goto") {
+      log_frame_ = static_cast<std::size_t>(std::stoull(arg));
+      sample();  // the shown frame's values: plots fill as the log is played or scrubbed
+    }
     if (verb == "load") {
       log_frame_.reset();
       std::smatch m;
@@ -85,6 +88,7 @@ void ViewBridge::event(const std::string& kind, const std::string& text) {
 }
 
 void ViewBridge::on_step() {
+  last_step_wall_ = std::chrono::system_clock::now();
   const int spf = steps_per_frame();
   if (spf > 0 && step_count() % static_cast<std::uint64_t>(spf) == 0) sample();
   send_frame_if_due(false);

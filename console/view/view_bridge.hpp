@@ -88,6 +88,7 @@ class ViewBridge {
   bool fell_ = false;
   std::size_t faults_ = 0;  // module faults already told
   std::chrono::steady_clock::time_point last_status_{};
+  std::optional<std::chrono::system_clock::time_point> last_step_wall_;  // frame.wall
   std::unique_ptr<model::RobotModel> shipped_model_;  // a remote robot's (the shipped NAO)
   std::size_t log_frames_ = 0;
   std::optional<std::size_t> log_frame_;

@@ -73,6 +73,7 @@ TEST(ViewLog, ALogIsBrowsedFrameByFrame) {
   ASSERT_TRUE(hello.is_object()) << view.out() << view.err();
   EXPECT_EQ(hello["mode"], "log");
   const std::size_t frames = hello["log_frames"];
+  page.send(R"({"op":"watch","keys":["representation:FrameInfo.frame"]})");
   EXPECT_NEAR(static_cast<double>(frames), 100, 1);
   const Json goto_reply = command(page, 1, "log goto 50");
   ASSERT_EQ(goto_reply["ok"], true) << goto_reply.dump();
@@ -82,6 +83,11 @@ TEST(ViewLog, ALogIsBrowsedFrameByFrame) {
   ASSERT_TRUE(f.is_object());
   ASSERT_EQ(f["robots"].size(), 1u);
   EXPECT_GT(lowest_z(f), -0.001);
+  EXPECT_NEAR(f["t"].get<double>(), 0.5, 0.011);  // the log's own clock at frame 50
+  ASSERT_EQ(f["samples"]["rows"].size(), 1u);     // the shown frame's values, at its time
+  EXPECT_EQ(f["samples"]["rows"][0][0], f["t"]);
+  EXPECT_EQ(f["samples"]["rows"][0][1], 50);
+  EXPECT_GT(f["wall"].get<double>(), 1.7e12);
   const Json t = command(page, 2, "get representation:FrameInfo.frame");
   EXPECT_NE(t["output"].get<std::string>().find("50"), std::string::npos) << t.dump();
   EXPECT_EQ(command(page, 3, "log goto 100000")["ok"], false);
