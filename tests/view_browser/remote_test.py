@@ -8,7 +8,7 @@ import sys
 import threading
 
 from selenium.webdriver.common.by import By
-from side_colours import MIN_PIXELS, count_sides
+from side_colours import MIN_PIXELS, paused_front_sides
 from view_harness import SOURCE_DIR, ViewProcess, check, main, open_page, tree_button, wait_js
 
 KEY = "representation:FrameInfo.time"
@@ -57,11 +57,7 @@ def test(stride, d):
             links = d.execute_script("return strideView.frame.robots[0].links")
             torso_z, foot_z = links[0][2], min(p[2] for p in links)
             check(torso_z - foot_z > 0.2, f"torso at z {torso_z}, lowest link at {foot_z}: not a standing body")
-            d.find_element(By.ID, "view-front").click()
-            d.find_element(By.ID, "btn-pause").click()  # stop following: the robot stays where it is
-            wait_js(d, "!strideView.frame.running", 15, "paused")
-            box = wait_js(d, "strideView.robotScreenBox(0)", 10, "the robot's box on screen")
-            blue, orange = count_sides(d.get_screenshot_as_png(), box, d.execute_script("return window.devicePixelRatio"))
+            blue, orange = paused_front_sides(d)
             check(blue >= MIN_PIXELS and orange >= MIN_PIXELS, f"{blue} blue, {orange} orange pixels of the remote robot")
             d.find_element(By.ID, "btn-run").click()  # following the robot again
             wait_js(d, "strideView.frame.running", 15, "following the robot")

@@ -1,7 +1,8 @@
 """The robot's side colours in a screenshot: the left side's blue and the right side's orange, as
 the page draws them (like the offscreen renderer), counted in the robot's box on screen."""
 import png_pixels
-from view_harness import check
+from selenium.webdriver.common.by import By
+from view_harness import check, wait_js
 
 MIN_PIXELS = 150  # of each side's colour in the robot's box (a standing NAO shows thousands)
 
@@ -27,3 +28,13 @@ def count_sides(png, box, scale):
             blue += is_blue(*px)
             orange += is_orange(*px)
     return blue, orange
+
+
+def paused_front_sides(d):
+    """A remote robot seen from the front with following paused (it stays where it is): its blue
+    and orange pixels."""
+    d.find_element(By.ID, "view-front").click()
+    d.find_element(By.ID, "btn-pause").click()
+    wait_js(d, "!strideView.frame.running", 15, "paused")
+    box = wait_js(d, "strideView.robotScreenBox(0)", 10, "the robot's box on screen")
+    return count_sides(d.get_screenshot_as_png(), box, d.execute_script("return window.devicePixelRatio"))
