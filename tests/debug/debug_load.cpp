@@ -98,6 +98,9 @@ Options read_options(int argc, char** argv) {
   if (!(o.seconds > 0) || o.block < 0 || o.block > o.seconds)
     throw Error("debug_load: expected 0 < --block <= --seconds");
   if (o.block == 0) o.block = o.seconds;
+  // The twin steps its controller without physics, so its clock stands still: a view follows none.
+  if (o.view && o.twin)
+    throw Error("debug_load: --view on is judged against quiet blocks, not --twin");
   return o;
 }
 

@@ -20,7 +20,7 @@ def main():
     stride, at, seconds = sys.argv[1], sys.argv[2], float(sys.argv[3])
     view = subprocess.Popen([stride, "view", "--connect", at, "--listen", "127.0.0.1:0",
                              "--seconds", str(seconds + 2)],
-                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         url = view.stdout.readline().strip()  # "view: http://127.0.0.1:PORT/"
         if not url.startswith("view: http://"):
@@ -38,12 +38,18 @@ def main():
                 samples += len((m.get("samples") or {}).get("rows") or [])
                 dropped = m.get("dropped", dropped)
         ws.close()
-        print(f"view peer: {frames} frames, {samples} samples of {len(KEYS)} keys, "
-              f"{dropped} dropped")
-        return 0 if frames > 0 and samples > 0 else 1
-    finally:
+        line = f"view peer: {frames} frames, {samples} samples of {len(KEYS)} keys, {dropped} dropped"
+        if frames > 0 and samples > 0:
+            print(line)
+            return 0
         view.terminate()
-        view.wait(timeout=10)
+        said = view.communicate(timeout=10)[1].strip().splitlines()
+        print(f"{line}; stride view said {said[-3:]!r}")
+        return 1
+    finally:
+        if view.poll() is None:
+            view.terminate()
+            view.wait(timeout=10)
 
 
 if __name__ == "__main__":
