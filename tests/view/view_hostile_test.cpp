@@ -88,7 +88,9 @@ class ViewHostile : public ::testing::Test {
   }
   // A clean end: exit code 0 on SIGTERM (under the sanitizers: no leak, no error report).
   void TearDown() override {
-    if (view_) EXPECT_EQ(view_->stop(), 0) << view_->err();
+    if (view_) {
+      EXPECT_EQ(view_->stop(), 0) << view_->err();
+    }
   }
   std::unique_ptr<ViewProcess> view_;
 };

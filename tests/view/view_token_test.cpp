@@ -38,7 +38,9 @@ class ViewToken : public ::testing::Test {
   std::filesystem::path dir_;
   // A clean end: exit code 0 on SIGTERM (under the sanitizers: no leak, no error report).
   void TearDown() override {
-    if (view_) EXPECT_EQ(view_->stop(), 0) << view_->err();
+    if (view_) {
+      EXPECT_EQ(view_->stop(), 0) << view_->err();
+    }
   }
   std::unique_ptr<ViewProcess> view_;
 };
