@@ -154,12 +154,14 @@ Json ViewBridge::module_times() {
 Json ViewBridge::frame(bool with_samples) {
   Json robots = robots_json();
   Json rows = Json::array();
-  for (auto& r : with_samples ? rows_ : std::vector<std::vector<double>>{}) {
-    Json row = Json::array();
-    for (double v : r) row.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
-    rows.push_back(std::move(row));
+  if (with_samples) {
+    for (const auto& r : rows_) {
+      Json row = Json::array();
+      for (double v : r) row.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+      rows.push_back(std::move(row));
+    }
+    rows_.clear();
   }
-  if (with_samples) rows_.clear();
   const int spf = std::max(1, steps_per_frame());
   return {
       {"type", "frame"},
@@ -179,7 +181,7 @@ Json ViewBridge::frame(bool with_samples) {
 
 void ViewBridge::sample() {
   if (watch_keys_.empty()) return;
-  if (rows_.size() >= kMaxRows) rows_.erase(rows_.begin());
+  if (rows_.size() >= kMaxRows) rows_.pop_front();
   std::vector<double> row{time()};
   for (const std::string& key : watch_keys_) {
     double v = std::nan("");

@@ -6,6 +6,7 @@
 // frame and sends frames at most 60 a second. The pages never pace the target.
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -80,7 +81,7 @@ class ViewBridge {
   WebServer server_;
   std::set<std::uint64_t> read_only_;
   std::vector<std::string> watch_keys_;
-  std::vector<std::vector<double>> rows_;  // samples since the last frame message
+  std::deque<std::vector<double>> rows_;  // samples since the last frame message
   std::uint64_t seq_ = 0;
   std::chrono::steady_clock::time_point last_frame_{};
   std::uint64_t last_steps_ = ~std::uint64_t{0};  // steps at the last frame sent

@@ -6,7 +6,6 @@
 #include <exception>
 
 #include "robot/runtime/controller_keys.hpp"
-#include "robot/runtime/recorded_config.hpp"
 
 namespace stride::debug {
 
@@ -121,12 +120,7 @@ LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
 
 void LoopSide::start_log(Runtime& rt, const LoopRequest& in) {
   if (log_) throw Error("a log is already being recorded (log stop first)");
-  std::vector<std::pair<std::string, const Slot*>> slots;
-  for (const auto& name : rt.representation_names())
-    slots.emplace_back(name, &rt.representation_slot(name));
-  // As Runtime::start_log: the log says what it ran with, so that a replay builds the same.
-  log_ =
-      std::make_unique<LogWriter>(in.path, std::move(slots), config_metadata(rt.running_config()));
+  log_ = rt.open_log(in.path);
   log_file_ = in.request.key;
   log_client_ = in.client;
 }

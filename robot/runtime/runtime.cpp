@@ -414,13 +414,18 @@ RuntimeConfig Runtime::running_config() const {
 }
 
 void Runtime::start_log(const std::string& path, const LogMetadata& metadata) {
+  log_ = open_log(path, metadata);
+  log_stopped_.clear();
+}
+
+std::unique_ptr<LogWriter> Runtime::open_log(const std::string& path,
+                                             const LogMetadata& metadata) const {
   std::vector<std::pair<std::string, const Slot*>> slots;
   for (const auto& s : slots_) slots.emplace_back(s->desc().name, s.get());
   // The log says what it ran with, so a replay after `mr` or `set module:` builds the same.
   LogMetadata all = config_metadata(running_config());
   for (const auto& [key, value] : metadata) all[key] = value;
-  log_ = std::make_unique<LogWriter>(path, std::move(slots), all);
-  log_stopped_.clear();
+  return std::make_unique<LogWriter>(path, std::move(slots), all);
 }
 
 std::size_t Runtime::logged_frames() const {

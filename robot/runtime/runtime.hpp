@@ -91,6 +91,9 @@ class Runtime {
   // Logs every representation on the blackboard every frame (see log.hpp), with running_config()
   // (recorded_config.hpp) and `metadata` (e.g. the robot's name) in the log's header.
   void start_log(const std::string& path, const LogMetadata& metadata = {});
+  // Such a log as a writer of its own, for a recorder beside the runtime's (a debug client's log).
+  std::unique_ptr<LogWriter> open_log(const std::string& path,
+                                      const LogMetadata& metadata = {}) const;
   void stop_log();
   bool logging() const { return log_ != nullptr; }
   std::size_t logged_frames() const;  // frames in the log being recorded (0 without one)
