@@ -1,5 +1,5 @@
 // The sweep coordinator's own cost per run, the figure that bounds how many workers one
-// coordinator can feed (README "Sweeps across machines"). The runs take no time, so all that is
+// coordinator can feed (docs/performance.md "Sweeps: scaling and throughput"). The runs take no time, so all that is
 // timed is what the coordinator does for each: hand the run out, take its row back (over a socket
 // from a forked worker, as a rank's row comes back over MPI), append it to runs.csv and
 // timing.csv, and at the end sort the rows and compute the tallies. A row has the posture study's

@@ -1,5 +1,6 @@
-// `stride-robot`: the program that goes onto a NAO v6 (`stride robot` and the deployment in the
-// README start it). It links only robot/ and behaviours/: no ODE, no OSMesa, no console.
+// `stride-robot`: the program that goes onto a NAO v6 (`stride robot` and the deployment in
+// docs/physical-robot.md start it). It links only robot/ and behaviours/: no ODE, no OSMesa,
+// no console.
 //   stride-robot --config <robot.xml> [--lola <socket>] [--log <file>]
 //   stride-robot lola dump [<socket>] [--frames N]
 #include <iostream>
@@ -17,7 +18,8 @@ int main(int argc, char** argv) {
               << stride::kLolaUsage << "\n";
     return 0;
   }
-  if (!args.empty() && args[0] == "lola") return stride::lola_main(all.subspan(1), std::cout, std::cerr);
+  if (!args.empty() && args[0] == "lola")
+    return stride::lola_main(all.subspan(1), std::cout, std::cerr);
   stride::ModuleRegistry registry;
   stride::behaviours::register_all_modules(registry);
   return stride::robot_main(all, registry, std::cout, std::cerr);

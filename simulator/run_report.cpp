@@ -30,7 +30,7 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   j.begin_object();
   j.field("scene", sim.scene().name);
   j.field("seed", static_cast<long long>(sim.scene().physics.seed));
-  // Results depend on the solver setting (README "Solver settings"), so every report names it.
+  // Results depend on the solver setting (docs/solver-settings.md), so every report names it.
   j.field("solver", solver_text(sim.scene().physics));
   j.field("sim_time", sim.time());
   if (timing.interrupted)

@@ -1,6 +1,6 @@
 #pragma once
-// Exit codes: the same kind of failure gives the same code from every `stride` command (README
-// "Exit codes").
+// Exit codes: the same kind of failure gives the same code from every `stride` command
+// (docs/console.md "Exit codes").
 #include <iosfwd>
 
 #include "robot/core/error.hpp"

@@ -1,6 +1,7 @@
 #pragma once
-// The console's vocabulary (DESIGN.md "Console"): name, usage, arity and an argument check per
-// command. Pure data and checks: no simulation is needed to parse, so the parser can be fuzzed.
+// The console's vocabulary (docs/architecture.md "Console"): name, usage, arity and an argument
+// check per command. Pure data and checks: no simulation is needed to parse, so the parser can be
+// fuzzed.
 #include <string>
 #include <string_view>
 #include <vector>

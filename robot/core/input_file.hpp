@@ -8,7 +8,7 @@
 
 namespace stride {
 
-// Size limits by kind of input, stated in the README.
+// Size limits by kind of input, stated in docs/scenes.md "Limits".
 inline constexpr std::uint64_t kMaxTextInputBytes = 64ull << 20;  // scenes, URDFs, device files
 inline constexpr std::uint64_t kMaxScriptBytes = 16ull << 20;     // console scripts
 inline constexpr std::uint64_t kMaxLogBytes = 8ull << 30;         // frame logs

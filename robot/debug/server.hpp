@@ -1,7 +1,7 @@
 #pragma once
-// The debug server of one robot runtime (DESIGN.md "Physical robot"): TCP, length-prefixed
-// msgpack (protocol.hpp), one thread of its own. Attach it to the runtime and the loop exchanges
-// with it only between frames:
+// The debug server of one robot runtime (docs/architecture.md "The physical robot"): TCP,
+// length-prefixed msgpack (protocol.hpp), one thread of its own. Attach it to the runtime and the
+// loop exchanges with it only between frames:
 //
 //   DebugServer server(options);             // listens; throws stride::Error (one line)
 //   runtime.set_frame_boundary(&server.boundary());

@@ -1,6 +1,6 @@
 #pragma once
 // The absurd-but-finite bounds every robot, scene and command is held to before the physics
-// engine sees a number (README "Limits"). Beyond them an engine asserts, overflows or loses all
+// engine sees a number (docs/scenes.md "Limits"). Beyond them an engine asserts, overflows or loses all
 // precision; within them a run may still diverge, which the divergence check reports.
 #include <sstream>
 #include <string>

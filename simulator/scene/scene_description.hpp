@@ -25,7 +25,7 @@ struct PhysicsSettings {
   // exact: ODE's dWorldStep, MuJoCo's Newton; iterative: ODE's quickstep, MuJoCo's PGS;
   // cg: MuJoCo's conjugate gradient (MuJoCo only). Newton and CG run to convergence.
   enum class Solver { Exact, Iterative, Cg } solver = Solver::Iterative;
-  // Iterative solver only. Walking studies state 20 (README "Solver settings").
+  // Iterative solver only. Walking studies state 20 (docs/solver-settings.md).
   int iterations = 10;
   double sor = 1.3;  // over-relaxation of the iterative solver
   double erp = 0.2;

@@ -1,5 +1,5 @@
 #pragma once
-// How much one scene may hold (README "Limits"): beyond these a scene is refused with a message
+// How much one scene may hold (docs/scenes.md "Limits"): beyond these a scene is refused with a message
 // naming the limit instead of exhausting memory or time.
 #include <cstddef>
 

@@ -1,5 +1,5 @@
 #!/bin/bash
-# The same kind of failure exits with the same code from every command (README "Exit codes"):
+# The same kind of failure exits with the same code from every command (docs/console.md "Exit codes"):
 # 2 wrong command line, 3 a file or command text that cannot be read or parsed, 1 it ran and
 # failed. And help finds things: console commands and keys in `stride help`, `--help` on every
 # command, whole words first, parameter lists with ranges.

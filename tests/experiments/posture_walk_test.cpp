@@ -55,7 +55,7 @@ int run(std::vector<std::string> args, std::string& err_text) {
 
 TEST(ExperimentCommand, BadArgumentsAreOneLineErrors) {
   std::string err;
-  EXPECT_EQ(run({"walkabout"}, err), 2);  // a wrong command line (README "Exit codes")
+  EXPECT_EQ(run({"walkabout"}, err), 2);  // a wrong command line (docs/console.md "Exit codes")
   EXPECT_NE(err.find("unknown experiment 'walkabout'"), std::string::npos) << err;
   EXPECT_EQ(run({"posture", "--seeds", "0"}, err), 2);
   EXPECT_NE(err.find("--seeds"), std::string::npos) << err;

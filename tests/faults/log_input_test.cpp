@@ -1,5 +1,5 @@
 // A file that is not a Stride log given to `log load`: one line naming it and exit 3, the code
-// README "Exit codes" gives for a file that cannot be read or parsed (a missing file gave 3, an
+// docs/console.md "Exit codes" gives for a file that cannot be read or parsed (a missing file gave 3, an
 // unparsable one 1).
 #include <gtest/gtest.h>
 

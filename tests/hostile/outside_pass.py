@@ -6,7 +6,7 @@
 Scene loader: hostile scene files (include chains around the depth limit, include bombs, a cycle,
 includes of a directory, a FIFO, /dev/zero and a missing file, names that are not UTF-8, numbers
 out of range); each is run with `stride run <scene> --seconds 0.01` under a 4 GB address limit
-(not under ASan) and a 60 s bound. Expected: exit 0 for the legal ones, else exit 3 (README: a file that cannot be read or
+(not under ASan) and a 60 s bound. Expected: exit 0 for the legal ones, else exit 3 (docs/console.md "Exit codes": a file that cannot be read or
 parsed) with one line naming the file and line - never a signal, a hang or a multi-line error.
 LoLA: `stride-robot` against a LoLA server of this script's own (python3-msgpack) sending hostile
 packets (garbage, truncated maps, wrong types, NaN and huge numbers, 64 KiB packets, a stalled or
@@ -57,7 +57,7 @@ def scene_case(d, name, files, expect_ok=False):
     secs = time.monotonic() - start
     if expect_ok:
         return tally("scene", p.returncode == 0, f"{name}: exit {p.returncode} in {secs:.1f} s")
-    good = p.returncode == 3 and len(lines) == 1 and ".xml" in lines[0]  # README: 3, unreadable file
+    good = p.returncode == 3 and len(lines) == 1 and ".xml" in lines[0]  # docs/console.md: 3, unreadable file
     tally("scene", good, f"{name}: exit {p.returncode} in {secs:.1f} s: {lines[:1]}")
 
 
