@@ -2,9 +2,9 @@
 # One static library per architectural folder; sources are every .cpp below the folders, so a
 # new file needs no CMake edit.
 #
-# The dependency direction (docs/architecture.md) is enforced through include paths: a library does not see
-# the source tree, only an include root of its own in the build tree holding links to the folders
-# it EXPOSES (its own). It sees other folders only through the libraries it links, so a
+# The dependency direction (docs/architecture.md) is enforced through include paths: a library does
+# not see the source tree, only an include root of its own in the build tree holding links to the
+# folders it EXPOSES (its own). It sees other folders only through the libraries it links, so a
 # wrong-way include (robot/ including simulator/) does not compile.
 function(stride_include_root target)
   set(root ${PROJECT_BINARY_DIR}/include_roots/${target})
