@@ -181,6 +181,10 @@ std::string LocalTarget::provider_of(const std::string& rep) {
 std::vector<std::string> LocalTarget::providers_available(const std::string& rep) {
   return runtime().providers_available(rep);
 }
+
+std::optional<std::vector<ModuleDeclaration>> LocalTarget::module_declarations() {
+  return runtime().module_declarations();
+}
 void LocalTarget::swap_provider(const std::string& rep, const std::string& module) {
   runtime().swap_provider(rep, module);
   if (module == "default")

@@ -146,6 +146,10 @@ std::vector<std::string> RemoteTarget::providers_available(const std::string& re
   return {};
 }
 
+std::optional<std::vector<ModuleDeclaration>> RemoteTarget::module_declarations() {
+  return debug::module_graph_of(call(request(Op::List))->fields());
+}
+
 void RemoteTarget::swap_provider(const std::string& representation, const std::string& module) {
   call(request(Op::Mr, representation, module));
 }

@@ -5,11 +5,13 @@
 // against either. Methods throw stride::Error with a one-line message and change nothing on error.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "robot/framework/module.hpp"
+#include "robot/framework/plan.hpp"
 #include "robot/framework/type_desc.hpp"
 
 namespace stride::console {
@@ -52,6 +54,9 @@ class RobotTarget {
   virtual std::string provider_of(const std::string& representation) = 0;
   virtual std::vector<std::string> providers_available(const std::string& representation) = 0;
   virtual void swap_provider(const std::string& representation, const std::string& module) = 0;
+  // What every module requires and provides; nullopt when the robot does not say (a debug
+  // server from before the module graph was in its `list`).
+  virtual std::optional<std::vector<ModuleDeclaration>> module_declarations() = 0;
   virtual std::vector<std::pair<std::string, DebugSwitch>> debug_requests() = 0;
   virtual void set_debug_request(const std::string& name, DebugSwitch state) = 0;
   // Called after every step of an advance: the debug output of the frames since the last call.

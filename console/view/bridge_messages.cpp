@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "console/build_revision.hpp"
 #include "console/interpreter/interpreter.hpp"
@@ -224,45 +225,79 @@ void ViewBridge::check_events() {
   faults_ = faults;
 }
 
+namespace {
+// Each module's declaration by name; none when the target does not say (an older robot).
+std::map<std::string, const ModuleDeclaration*> by_name(
+    const std::optional<std::vector<ModuleDeclaration>>& decls) {
+  std::map<std::string, const ModuleDeclaration*> out;
+  if (decls)
+    for (const ModuleDeclaration& d : *decls) out.emplace(d.name, &d);
+  return out;
+}
+
+// Representation -> the modules that require it (from the declarations).
+std::map<std::string, Json> required_by(const std::optional<std::vector<ModuleDeclaration>>& d) {
+  std::map<std::string, Json> out;
+  if (d)
+    for (const ModuleDeclaration& m : *d)
+      for (const std::string& r : m.requires_) out[r].push_back(m.name);
+  return out;
+}
+}  // namespace
+
 Json ViewBridge::tree() {
   console::RobotTarget& t = interpreter_.target();
   Json reps = Json::array(), modules = Json::array(), debug = Json::array();
-  std::map<std::string, Json> provides;  // module -> what it provides
+  std::map<std::string, Json> provides;  // module -> what it provides on the blackboard
   try {
+    const auto decls = t.module_declarations();
+    const auto declared = by_name(decls);
+    auto users = required_by(decls);
     for (const std::string& r : t.representations()) {
       const std::string provider = t.provider_of(r);
       if (!provider.empty()) provides[provider].push_back(r);
       Json rep = {{"name", r},
                   {"provider", provider},
                   {"available", t.providers_available(r)},
-                  {"requires", Json::array()}};
+                  {"required_by", !decls              ? Json(nullptr)
+                                  : users.contains(r) ? users[r]
+                                                      : Json::array()}};
       rep["fields"] = type_desc_json(t.type_of("representation:" + r));
       reps.push_back(std::move(rep));
     }
-    // Every module that ran (execution order, with its time) and every one with parameters.
+    // Every module that ran (execution order, with its time), every one with parameters, then
+    // every other declared one (a provider `mr` may choose).
     const Json times = module_times();
     const std::vector<std::string> with_params = t.parameter_modules();
     std::vector<std::string> names = strings(value(kModulesKey));
-    for (const std::string& m : with_params)
+    auto add = [&](const std::string& m) {
       if (std::find(names.begin(), names.end(), m) == names.end()) names.push_back(m);
+    };
+    for (const std::string& m : with_params) add(m);
+    for (const auto& [m, d] : declared) add(m);
     for (const std::string& m : names) {
       const bool params = std::find(with_params.begin(), with_params.end(), m) != with_params.end();
+      const auto d = declared.find(m);
+      const bool known = d != declared.end();
       modules.push_back(
           {{"name", m},
-           {"requires", Json::array()},
-           {"provides", provides.contains(m) ? provides[m] : Json::array()},
+           {"requires", known ? Json(d->second->requires_) : Json(nullptr)},
+           {"provides", known                  ? Json(d->second->provides)
+                        : provides.contains(m) ? provides[m]
+                                               : Json::array()},
            {"params", params ? type_desc_json(t.type_of("module:" + m)) : Json(nullptr)},
            {"ms", times.contains(m) ? times[m] : Json(nullptr)}});
     }
     for (const auto& [name, state] : t.debug_requests())
       debug.push_back({{"name", name}, {"state", std::string(debug_switch_name(state))}});
+    return {{"type", "tree"},
+            {"representations", std::move(reps)},
+            {"modules", std::move(modules)},
+            {"graph", decls.has_value()},
+            {"debug", std::move(debug)}};
   } catch (const Error& e) {
     return {{"type", "error"}, {"error", std::string("tree: ") + e.what()}};
   }
-  return {{"type", "tree"},
-          {"representations", std::move(reps)},
-          {"modules", std::move(modules)},
-          {"debug", std::move(debug)}};
 }
 
 }  // namespace stride::view

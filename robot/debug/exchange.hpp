@@ -12,6 +12,7 @@
 
 #include "robot/debug/protocol.hpp"
 #include "robot/debug/spsc_ring.hpp"
+#include "robot/framework/plan.hpp"
 #include "robot/framework/slot.hpp"
 
 namespace stride::debug {
@@ -64,6 +65,7 @@ struct RobotState {
   std::vector<std::vector<std::string>> available;
   std::vector<std::string> parameter_modules, module_order;
   std::vector<std::int64_t> module_ns;  // ModuleTimes of the last frame, in module order
+  std::vector<ModuleDeclaration> declarations;  // every registered module's requires/provides
   std::vector<std::string> debug_requests;
   std::vector<std::string> debug_states;  // off, on, quiet
   std::string log_file;                   // being recorded ("" none)

@@ -302,6 +302,7 @@ RobotState robot_state(const Runtime& rt, const std::string& robot, const std::s
   const auto& times = rt.representation<ModuleTimes>();
   s.module_order = times.modules;
   s.module_ns = times.ns;
+  s.declarations = rt.module_declarations();
   for (const auto& [name, state] : rt.debug_requests()) {
     s.debug_requests.push_back(name);
     s.debug_states.emplace_back(debug_switch_name(state));

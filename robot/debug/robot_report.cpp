@@ -4,6 +4,7 @@
 
 #include "robot/core/json_writer.hpp"
 #include "robot/debug/msgpack_map.hpp"
+#include "robot/debug/server_message.hpp"
 
 namespace stride::debug {
 
@@ -84,6 +85,7 @@ void write_list_fields(MapWriter& w, const RobotState& s) {
       .texts("order", s.module_order)
       .text("log", s.log_file)
       .unsigned_integer("log_frames", s.log_frames);
+  write_module_graph(w, s.declarations);
 }
 
 }  // namespace stride::debug

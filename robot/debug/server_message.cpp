@@ -58,4 +58,32 @@ Sample sample_of(const MapView& m) {
   return s;
 }
 
+void write_module_graph(MapWriter& w, const std::vector<ModuleDeclaration>& modules) {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> requires_, provides;
+  for (const ModuleDeclaration& d : modules) {
+    names.push_back(d.name);
+    requires_.push_back(d.requires_);
+    provides.push_back(d.provides);
+  }
+  w.texts("graph_modules", names)
+      .text_lists("graph_requires", requires_)
+      .text_lists("graph_provides", provides);
+}
+
+std::optional<std::vector<ModuleDeclaration>> module_graph_of(const MapView& m) {
+  if (!m.has("graph_modules")) return std::nullopt;
+  const std::vector<std::string> names = m.texts("graph_modules");
+  auto requires_ = m.text_lists("graph_requires");
+  auto provides = m.text_lists("graph_provides");
+  if (requires_.size() != names.size() || provides.size() != names.size())
+    throw Error("reply 'list': " + std::to_string(names.size()) + " graph_modules but " +
+                std::to_string(requires_.size()) + " graph_requires and " +
+                std::to_string(provides.size()) + " graph_provides");
+  std::vector<ModuleDeclaration> out(names.size());
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out[i] = {names[i], std::move(requires_[i]), std::move(provides[i])};
+  return out;
+}
+
 }  // namespace stride::debug

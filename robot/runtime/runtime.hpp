@@ -51,6 +51,8 @@ class Runtime {
   const model::RobotModel* robot_model() const { return config_.model.get(); }
 
   const std::vector<std::string>& module_order() const { return order_; }
+  // What every registered module requires and provides (running or not), in registry order.
+  const std::vector<ModuleDeclaration>& module_declarations() const { return declarations_; }
   std::string provider_of(const std::string& representation) const;  // "" for built-ins
   std::vector<std::string> providers_available(const std::string& representation) const;
   // Chooses `module` (or "default": the configured choice) for `representation` and re-plans

@@ -39,6 +39,7 @@ inline std::vector<std::string> fuzz_debug_input(const std::uint8_t* data, std::
     if (m.type() == "hello") debug::hello_of(m.fields());
     if (m.type() == "welcome") debug::welcome_of(m.fields());
     if (m.type() == "sample") debug::sample_of(m.fields());
+    if (m.type() == "reply") debug::module_graph_of(m.fields());
   });
   attempt([&] {
     ByteReader r(bytes);

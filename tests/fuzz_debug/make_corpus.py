@@ -63,6 +63,12 @@ messages = {
                         "available": [[], ["CounterFromFrame", "CounterAfterStand"]],
                         "modules": ["Stand"], "debug": ["test:negate"], "debug_state": ["quiet"],
                         "order": ["CounterFromFrame"], "log": "", "log_frames": 0}),
+    "reply_list_graph": pack({"t": "reply", "id": 7, "ok": True, "order": ["CounterFromFrame"],
+                              "graph_modules": ["CounterFromFrame", "Doubler", "Idle"],
+                              "graph_requires": [["FrameInfo"], ["Counter"], []],
+                              "graph_provides": [["Counter"], ["Doubled"], []]}),
+    "reply_list_graph_short": pack({"t": "reply", "id": 7, "ok": True, "graph_modules": ["A", "B"],
+                                    "graph_requires": [["X"]], "graph_provides": [[], ["Y"]]}),
 }
 
 

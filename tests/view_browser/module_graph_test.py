@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""The module graph: every module the tree names is drawn; choosing another provider in the
+"""The module graph: every module the tree names is drawn, PatternWalk with an edge from the
+provider of each thing it requires; choosing another provider in the
 providers table runs `mr`, which `get provider:<Rep>` in the console pane and the next tree
 message both read back; `mr <Rep> default` returns to the configured one."""
 import sys
 
+from graph_edges import check_edges_of
 from selenium.webdriver.common.by import By
 from view_harness import ViewProcess, check, choose, console, main, open_page, value_of, wait_js
 
@@ -28,6 +30,7 @@ def test(stride, d):
         drawn = d.execute_script("return [...document.querySelectorAll('#module-graph g.module')]"
                                  ".map(g => g.dataset.module)")
         check(sorted(names) == sorted(drawn), f"modules {sorted(names)} but drawn {sorted(drawn)}")
+        edges, total = check_edges_of(d, "PatternWalk")
         before = provider_in_tree(d)
         values = d.execute_script("return [...document.querySelector(arguments[0]).options].map(o => o.value)", SEL)
         check(before in values and "HipStrategy" in values, f"providers offered: {values}")
@@ -48,7 +51,7 @@ def test(stride, d):
         choose(d, SEL, "default")
         wait_js(d, f"strideView.tree.representations.find(r => r.name === '{REP}').provider === '{before}'", 15,
                 f"mr default returns to {before}")
-        print(f"{len(names)} modules drawn; {REP}: {before} -> {swap_to} -> default ({before})")
+        print(f"{len(names)} modules drawn, {total} edges, PatternWalk's: {edges}; {REP}: {before} -> {swap_to} -> default ({before})")
 
 
 if __name__ == "__main__":

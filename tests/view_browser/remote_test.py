@@ -7,6 +7,7 @@ import subprocess
 import sys
 import threading
 
+from graph_edges import check_edges_of
 from selenium.webdriver.common.by import By
 from side_colours import MIN_PIXELS, paused_front_sides
 from view_harness import SOURCE_DIR, ViewProcess, check, main, open_page, tree_button, wait_js
@@ -50,6 +51,9 @@ def test(stride, d):
             check(d.execute_script("return strideView.hello.mode") == "remote", "hello mode is not remote")
             wait_js(d, "strideView.frame.robots?.[0]?.links?.length > 10", 20, "the robot's link poses in a frame")
             wait_js(d, "strideView.tree?.representations?.length > 0", 20, "the robot's tree")
+            edges, total = check_edges_of(d, "PatternWalk")  # the robot's declarations, over the wire
+            print(f"remote graph: {total} edges, PatternWalk's: {edges}")
+            d.find_element(By.ID, "tab-data").click()
             tree_button(d, KEY, "tree-plot")
             samples = wait_js(d, f"strideView.store.t.length >= 50 && strideView.store.cols.get('{KEY}')", 30,
                               "50 samples from the robot")

@@ -50,11 +50,14 @@ export class ModuleGraph {
   }
 
   setTree(msg) {
+    this.graphKnown = msg.graph !== false; // an older robot does not say what modules require
     const providerOf = new Map((msg.representations || []).map((r) => [r.name, r.provider]));
     const active = new Set(providerOf.values());
     const mods = msg.modules || [];
     const on = mods.filter((m) => active.has(m.name)); // the rest provide nothing: not running
     const off = mods.filter((m) => !on.includes(m));
+    this.providerOf = providerOf;
+    if (!this.graphKnown) this.detail.textContent = "this robot's debug server does not say what modules require: no edges";
     this.draw(on, off, providerOf);
     this.providers(msg.representations || []);
   }
@@ -82,13 +85,17 @@ export class ModuleGraph {
     this.msEls.clear();
     const { pos, height } = this.place(on, off, providerOf);
     this.svg.setAttribute("height", height);
+    const marker = svg("marker", { id: "edge-head", viewBox: "0 0 6 6", refX: 6, refY: 3, markerWidth: 6, markerHeight: 6, orient: "auto" },
+      svg("defs", {}, this.svg));
+    svg("path", { d: "M0,0 L6,3 L0,6 z", class: "edge-head" }, marker);
     for (const m of on)
       for (const rep of m.requires || []) {
         const from = pos.get(providerOf.get(rep)), to = pos.get(m.name);
         if (!from || !to || from === to) continue;
         const x1 = from.x + BOX_W / 2, y1 = from.y + from.h, x2 = to.x + BOX_W / 2, y2 = to.y;
-        const e = svg("path", { class: "edge", d: `M${x1},${y1} C${x1},${y1 + 18} ${x2},${y2 - 18} ${x2},${y2}` }, this.svg);
-        svg("title", {}, e).textContent = rep;
+        const e = svg("path", { class: "edge", "marker-end": "url(#edge-head)", d: `M${x1},${y1} C${x1},${y1 + 18} ${x2},${y2 - 18} ${x2},${y2}` }, this.svg);
+        Object.assign(e.dataset, { from: providerOf.get(rep), to: m.name, rep });
+        svg("title", {}, e).textContent = `${providerOf.get(rep)} -> ${rep} -> ${m.name}`;
       }
     for (const m of [...on, ...off]) this.box(m, pos.get(m.name), on.includes(m));
   }
@@ -106,10 +113,21 @@ export class ModuleGraph {
       ms.textContent = formatMs(m.ms);
       this.msEls.set(m.name, ms);
     }
-    const detail = `${m.name}${running ? "" : " (not running)"}\nrequires: ${(m.requires || []).join(", ") || "-"}\n` +
+    const detail = `${m.name}${running ? "" : " (not running)"}\nrequires: ${this.requiresText(m)}\n` +
       `provides: ${(m.provides || []).join(", ") || "-"}`;
     svg("title", {}, g).textContent = detail;
-    g.addEventListener("click", () => (this.detail.textContent = detail));
+    g.addEventListener("click", () => {
+      this.detail.textContent = detail;
+      for (const e of this.svg.querySelectorAll("path.edge"))
+        e.classList.toggle("hl", e.dataset.from === m.name || e.dataset.to === m.name);
+    });
+  }
+
+  // What a module requires, each with the module providing it now (the active provider).
+  requiresText(m) {
+    if (!Array.isArray(m.requires)) return this.graphKnown ? "?" : "? (the robot does not say)";
+    const from = (rep) => (this.providerOf.get(rep) ? ` <- ${this.providerOf.get(rep)}` : " (built in)");
+    return m.requires.map((rep) => rep + from(rep)).join(", ") || "-";
   }
 
   providers(reps) {
