@@ -16,6 +16,21 @@
 
 namespace stride::sim {
 
+// <contact>: one compliant contact law that every engine realises alike (world/contact_law.hpp):
+// a linear spring and damper in the normal direction, hard Coulomb friction within a cone.
+struct ContactLaw {
+  double stiffness =
+      0;  // N/m: a body's whole spring against the static scene (per_body), or a point's
+  double damping = 0;    // N s/m, likewise
+  bool per_body = true;  // split over however many points the collider finds for the body that step
+  double friction = 0.8;  // the robot's geoms, and every surface that states no friction of its own
+  // elliptic: |f_t| <= mu f_n (on ODE a pyramid turned to the slip each step); pyramid:
+  // |f_t1| <= mu f_n and |f_t2| <= mu f_n, t1 along world x in the contact plane
+  enum class Cone { Pyramid, Elliptic } cone = Cone::Elliptic;
+  std::string file;  // where <contact> was written, for what an engine cannot realise
+  int line = 0;
+};
+
 struct PhysicsSettings {
   // ode (default) or mujoco, the optional second engine (STRIDE_MUJOCO).
   enum class Engine { Ode, Mujoco } engine = Engine::Ode;
@@ -45,6 +60,8 @@ struct PhysicsSettings {
   double contact_dmax = 0.95;       // solimp[1]
   Eigen::Vector3d gravity{0, 0, -9.81};
   std::uint64_t seed = 1;
+  std::optional<ContactLaw>
+      contact_law;  // <contact>; replaces the engine-specific contact settings
 };
 
 struct GroundSettings {

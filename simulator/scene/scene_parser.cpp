@@ -16,6 +16,7 @@
 #include "robot/model/physical_limits.hpp"
 #include "robot/runtime/controller_config.hpp"
 #include "simulator/devices/device_parser.hpp"
+#include "simulator/scene/contact_law_parser.hpp"
 #include "simulator/scene/include_walk.hpp"
 #include "simulator/scene/mujoco_options.hpp"
 #include "simulator/scene/scene_limits.hpp"
@@ -44,6 +45,9 @@ class Parser {
     physics(XmlElement(doc.RootElement(), out_.file));
   }
 
+  // What needs the whole scene: the contact law against <physics>, the engine and the surfaces.
+  void finish() { finish_contact_law(out_, replaced_, unstated_); }
+
   void parse_file(const std::string& path) { walk_.walk_file(path); }
   void parse_text(const std::string& text, const std::string& path) { walk_.walk_text(text, path); }
 
@@ -57,17 +61,23 @@ class Parser {
 
   void element(const XmlElement& e) {
     const std::string_view n = e.name();
-    if (n == "physics")
+    const bool unstated = !e.has("friction");  // such a surface takes the law's
+    if (n == "physics") {
       physics(e);
-    else if (n == "ground")
+    } else if (n == "contact") {
+      no_children(e);
+      once(e);
+      parse_contact_law(e, out_.physics);
+    } else if (n == "ground") {
       ground(e);
-    else if (n == "box")
-      box(e);
-    else if (n == "ramp")
-      ramp(e);
-    else if (n == "uneven")
+      unstated_.ground = unstated;
+    } else if (n == "box" || n == "ramp") {
+      n == "box" ? box(e) : ramp(e);
+      if (unstated) unstated_.boxes.push_back(out_.boxes.size() - 1);
+    } else if (n == "uneven") {
       uneven(e);
-    else if (n == "robot")
+      if (unstated) unstated_.uneven.push_back(out_.uneven.size() - 1);
+    } else if (n == "robot")
       robot(e);
     else if (n == "push")
       push(e);
@@ -77,8 +87,8 @@ class Parser {
       light(e);
     else
       e.fail(
-          "unknown element (expected physics, ground, box, ramp, uneven, robot, push, camera, "
-          "light or include)");
+          "unknown element (expected physics, contact, ground, box, ramp, uneven, robot, push, "
+          "camera, light or include)");
   }
 
   // <physics>, <ground>: one per scene, includes counted; a second one names both places.
@@ -106,6 +116,8 @@ class Parser {
   void physics(const XmlElement& e) {
     physics_seen_ = true;
     set_physics_over(e);
+    for (const char* a : kReplacedByLaw)
+      if (e.has(a) && replaced_.attr.empty()) replaced_ = {e.file(), a, e.line()};
     e.allow_only({"engine",
                   "step",
                   "solver",
@@ -464,6 +476,8 @@ class Parser {
   long static_shapes_ = 0;
   PhysicsAttributes physics_over_;
   bool physics_seen_ = false;
+  ReplacedAttribute replaced_;
+  UnstatedFriction unstated_{true, {}, {}};  // no <ground>: the default ground states none
   IncludeWalk walk_{[this](const XmlElement& e) { scene_root(e); },
                     [this](const XmlElement& e) { element(e); }};
 };
@@ -493,6 +507,7 @@ SceneDescription parse_scene_file(const std::string& given, const PhysicsAttribu
     Parser p(s, physics_over);
     p.parse_file(path);
     p.physics_over_defaults();
+    p.finish();
     check_references(s);
   } catch (const InputError&) {
     throw;
@@ -531,6 +546,7 @@ SceneDescription parse_scene_text(const std::string& text, const std::string& vi
   s.file = virtual_path;
   Parser p(s);
   p.parse_text(text, virtual_path);
+  p.finish();
   check_references(s);
   return s;
 }

@@ -7,6 +7,7 @@
 
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_limits.hpp"
+#include "simulator/world/mujoco/mj_contact_law.hpp"
 #include "simulator/world/mujoco/mj_robot_body.hpp"
 
 namespace stride::sim {
@@ -120,10 +121,38 @@ void MjWorld::retarget_motor_rows() {
           (motors_[data_->efc_id[row]].speed - data_->efc_vel[row]) / model_->opt.timestep;
 }
 
+// mj_step1 as MuJoCo 2.2.2 runs it, with the scene's contact law put into the contacts and their
+// rows between collision and the constraint projection.
+void MjWorld::step1_with_law() {
+  const ContactLaw& law = *physics_.contact_law;
+  mj_checkPos(model_, data_);
+  mj_checkVel(model_, data_);
+  mj_kinematics(model_, data_);
+  mj_comPos(model_, data_);
+  mj_camlight(model_, data_);
+  mj_tendon(model_, data_);
+  mj_crb(model_, data_);
+  mj_factorM(model_, data_);
+  mj_collision(model_, data_);
+  orient_law_contacts(model_, data_, law);
+  mj_makeConstraint(model_, data_);
+  mj_transmission(model_, data_);
+  impose_law_rows(model_, data_, law, physics_.cfm, points_per_body_);
+  mj_projectConstraint(model_, data_);
+  mj_sensorPos(model_, data_);
+  mj_energyPos(model_, data_);
+  mj_fwdVelocity(model_, data_);
+  mj_sensorVel(model_, data_);
+  mj_energyVel(model_, data_);
+}
+
 void MjWorld::step() {
   if (dirty_) compile();
   const double before = data_->time;
-  mj_step1(model_, data_);
+  if (physics_.contact_law)
+    step1_with_law();
+  else
+    mj_step1(model_, data_);
   retarget_motor_rows();
   mj_step2(model_, data_);
   if (!(data_->time > before)) data_->warning[mjWARN_BADQACC].number += 1;  // it reset itself

@@ -57,14 +57,16 @@ class MjWorld : public PhysicsWorld {
   void compile();
   void record_contacts();
   void retarget_motor_rows();
+  void step1_with_law();
 
   GroundSettings ground_;
   std::vector<StaticBox> boxes_;
   std::vector<MjcfRobot> robots_;
   std::vector<model::JointVector> initial_q_;
   std::vector<MjRobotLayout> layouts_;
-  std::vector<GeomInfo> geoms_;  // by mjModel geom id
-  std::vector<MjMotor> motors_;  // by dof
+  std::vector<GeomInfo> geoms_;       // by mjModel geom id
+  std::vector<MjMotor> motors_;       // by dof
+  std::vector<int> points_per_body_;  // the contact law's split, by mjModel body id
   int static_geoms_ = 0;
   bool dirty_ = true;
   mjModel* model_ = nullptr;

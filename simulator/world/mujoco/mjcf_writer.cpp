@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "simulator/world/contact_law.hpp"
+
 namespace stride::sim {
 namespace {
 
@@ -31,8 +33,8 @@ std::string pose_attrs(const Eigen::Isometry3d& t) {
 
 // MuJoCo takes the higher-priority geom's friction: the lower-friction side gets the priority,
 // so a pair's friction is the smaller one as in ODE. Robot geoms stand at priority 1.
-int static_priority(double friction) {
-  return friction < kRobotGeomFriction ? 2 : 0;
+int static_priority(double friction, double robot_friction) {
+  return friction < robot_friction ? 2 : 0;
 }
 
 std::string friction_attr(double mu) {
@@ -85,9 +87,9 @@ void write_link(std::ostream& out, const MjcfRobot& r, int link, const Eigen::Is
     write_joint(out, m.joints[l.parent_joint], mjcf_joint_name(r.robot_index, l.parent_joint));
   out << inertial(l.inertial);
   for (const model::CollisionShape& s : l.collisions) {
-    out << "<geom" << shape_attrs(s) << pose_attrs(s.origin) << friction_attr(kRobotGeomFriction)
+    out << "<geom" << shape_attrs(s) << pose_attrs(s.origin) << friction_attr(r.friction)
         << " priority=\"1\"/>";
-    geoms.push_back({r.robot_index, link, kRobotGeomFriction});
+    geoms.push_back({r.robot_index, link, r.friction});
   }
   for (int j : l.child_joints)
     write_link(out, r, m.joints[j].child_link, m.joints[j].origin, geoms);
@@ -108,13 +110,16 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
                        const std::vector<StaticBox>& boxes, const std::vector<MjcfRobot>& robots,
                        std::vector<GeomInfo>& geoms) {
   geoms.clear();
+  const double robot_friction = robot_geom_friction(physics);
   std::ostringstream out;
   using Solver = PhysicsSettings::Solver;
   const bool converged = physics.solver != Solver::Iterative;  // Newton and CG run to convergence
   const char* solver = physics.solver == Solver::Exact ? "Newton"
                        : physics.solver == Solver::Cg  ? "CG"
                                                        : "PGS";
-  const bool elliptic = physics.cone == PhysicsSettings::Cone::Elliptic;
+  const bool elliptic = physics.contact_law
+                            ? physics.contact_law->cone == ContactLaw::Cone::Elliptic
+                            : physics.cone == PhysicsSettings::Cone::Elliptic;
   out << "<mujoco model=\"stride\">\n<compiler angle=\"radian\" balanceinertia=\"true\"/>\n"
       << "<option timestep=\"" << num(physics.step) << "\" gravity=\"" << vec(physics.gravity)
       << "\" integrator=\"Euler\" jacobian=\"dense\" cone=\""
@@ -128,15 +133,19 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
       << "<size njmax=\"1000\" nconmax=\"250\"/>\n<worldbody>\n";
   if (ground.enabled) {
     out << "<geom type=\"plane\" size=\"0 0 1\"" << friction_attr(ground.friction) << " priority=\""
-        << static_priority(ground.friction) << "\"/>\n";
+        << static_priority(ground.friction, robot_friction) << "\"/>\n";
     geoms.push_back({-1, -1, ground.friction});
   }
   for (const StaticBox& b : boxes) {
     out << "<geom type=\"box\" size=\"" << vec(b.size / 2) << "\"" << pose_attrs(b.pose)
-        << friction_attr(b.friction) << " priority=\"" << static_priority(b.friction) << "\"/>\n";
+        << friction_attr(b.friction) << " priority=\""
+        << static_priority(b.friction, robot_friction) << "\"/>\n";
     geoms.push_back({-1, -1, b.friction});
   }
-  for (const MjcfRobot& r : robots) write_link(out, r, r.model->root_link, r.root_pose, geoms);
+  for (MjcfRobot r : robots) {
+    r.friction = robot_friction;
+    write_link(out, r, r.model->root_link, r.root_pose, geoms);
+  }
   out << "</worldbody>\n</mujoco>\n";
   return out.str();
 }

@@ -14,15 +14,16 @@
 
 namespace stride::sim {
 
+// A robot geom's friction without a contact law; a pair uses the smaller one, as in the ODE world.
+constexpr double kRobotGeomFriction = 0.8;
+
 struct MjcfRobot {
   const model::RobotModel* model = nullptr;
   int robot_index = 0;
   Eigen::Isometry3d root_pose = Eigen::Isometry3d::Identity();
   bool fixed = false;
+  double friction = kRobotGeomFriction;  // its geoms' (write_mjcf sets the scene's)
 };
-
-// A robot geom's friction; a pair uses the smaller one, as in the ODE world.
-constexpr double kRobotGeomFriction = 0.8;
 
 // The MJCF document, and in `geoms` the GeomInfo of every geom in MuJoCo's geom order.
 std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "simulator/world/contact_law.hpp"
+
 namespace stride::sim {
 namespace {
 
@@ -80,7 +82,7 @@ OdeRobotBody::OdeRobotBody(OdeWorld& world, const model::RobotModel& model, int 
       dMatrix3 r;
       to_ode_rotation(s.origin.linear(), r);
       dGeomSetOffsetRotation(g, r);
-      dGeomSetData(g, world.new_geom_info({robot_index, i, 0.8}));
+      dGeomSetData(g, world.new_geom_info({robot_index, i, robot_geom_friction(world.settings())}));
     }
     bodies_[i] = b;
   }

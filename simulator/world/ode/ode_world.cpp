@@ -5,6 +5,7 @@
 
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_limits.hpp"
+#include "simulator/world/contact_law.hpp"
 #include "simulator/world/ode/ode_context.hpp"
 #include "simulator/world/ode/ode_robot_body.hpp"
 #include "simulator/world/ode/plane_cull.hpp"
@@ -12,7 +13,21 @@
 namespace stride::sim {
 namespace {
 constexpr size_t kMaxRecordedContacts = 4096;
+
+// The law's first friction axis at a contact: world x in the contact plane for its pyramid; for its
+// elliptic cone the way the contact slips, so that the pyramid's bound mu f_n acts against the slip.
+Eigen::Vector3d law_axis(const ContactLaw& law, dBodyID b1, dBodyID b2, const dContactGeom& g) {
+  const Eigen::Vector3d n(g.normal[0], g.normal[1], g.normal[2]);
+  if (law.cone == ContactLaw::Cone::Pyramid) return law_friction_axis(n);
+  dVector3 v1 = {0, 0, 0, 0}, v2 = {0, 0, 0, 0};
+  if (b1) dBodyGetPointVel(b1, g.pos[0], g.pos[1], g.pos[2], v1);
+  if (b2) dBodyGetPointVel(b2, g.pos[0], g.pos[1], g.pos[2], v2);
+  const Eigen::Vector3d v(v1[0] - v2[0], v1[1] - v2[1], v1[2] - v2[2]);
+  const Eigen::Vector3d slip = v - v.dot(n) * n;
+  return slip.norm() > 1e-6 ? Eigen::Vector3d(slip.normalized()) : law_friction_axis(n);
 }
+
+}  // namespace
 
 OdeWorld::OdeWorld(const PhysicsSettings& physics, const GroundSettings& ground)
     : PhysicsWorld(physics) {
@@ -24,7 +39,15 @@ OdeWorld::OdeWorld(const PhysicsSettings& physics, const GroundSettings& ground)
   dWorldSetQuickStepNumIterations(world_, physics.iterations);
   dWorldSetQuickStepW(world_, physics.sor);
   dWorldSetAutoDisableFlag(world_, 0);
-  dWorldSetContactSurfaceLayer(world_, 0.0005);
+  // A contact law's spring starts at the surfaces, as MuJoCo's does; without one, ODE's 0.5 mm
+  // layer.
+  dWorldSetContactSurfaceLayer(world_, physics.contact_law ? 0.0 : 0.0005);
+  if (const auto& law = physics.contact_law) {  // realised by the per-point ERP/CFM below
+    const ContactSoftness point = law_point_softness(*law, 1, physics.step);
+    physics_.contact_erp = point.erp;
+    physics_.contact_cfm = point.cfm;
+    physics_.contact_spring_per_body = law->per_body;
+  }
   robot_space_ = dHashSpaceCreate(nullptr);
   static_space_ = dHashSpaceCreate(nullptr);
   contact_group_ = dJointGroupCreate(0);
@@ -92,6 +115,11 @@ void OdeWorld::collide_pair(dGeomID g1, dGeomID g2) {
     c.surface.soft_erp = physics_.contact_erp;
     c.surface.soft_cfm = physics_.contact_cfm;
     c.geom = geoms[k];
+    if (physics_.contact_law) {
+      c.surface.mode |= dContactFDir1;
+      const Eigen::Vector3d t = law_axis(*physics_.contact_law, b1, b2, c.geom);
+      for (int i = 0; i < 3; ++i) c.fdir1[i] = t[i];
+    }
     pending_.push_back({c, b1, b2, i1, i2});
   }
 }
