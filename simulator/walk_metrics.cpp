@@ -81,7 +81,8 @@ void WalkMetrics::observe(const SimulatedRobot& robot) {
   const bool both = left > threshold_ && right > threshold_;
   const bool one = (left > threshold_) != (right > threshold_);
   if (one) in_single_support_ = true;
-  if (both && in_single_support_) {  // a new double support: one step completed
+  // A new double support: one step completed (a robot on the floor makes no more steps).
+  if (both && in_single_support_ && !r_.fell) {
     in_single_support_ = false;
     ++r_.steps;
     r_.fk_distance +=

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -295,7 +296,20 @@ std::string LocalTarget::report_json() {
 
 void LocalTarget::push(const std::string& body, double fx, double fy, double fz, double seconds) {
   const std::string name = robot().name();
+  const model::RobotModel& model = robot().model();
+  if (model.link_index(body) < 0) {  // the names a push takes, so the next try is right
+    std::string names;
+    for (const model::Link& l : model.links) names += (names.empty() ? "" : ", ") + l.name;
+    throw Error("push: robot '" + name + "' has no link named '" + body + "' (its links: " + names +
+                ")");
+  }
   session().simulation().push(name, body, {fx, fy, fz}, Eigen::Vector3d::Zero(), seconds);
+}
+
+std::uint64_t LocalTarget::steps_per_frame() {
+  const double dt = step_seconds();
+  if (!loaded() || !(dt > 0) || robot_names().empty()) return 1;
+  return static_cast<std::uint64_t>(std::max(1.0, std::round(robot().period() / dt)));
 }
 
 void LocalTarget::move_robot(double x, double y, double z, double yaw) {

@@ -67,6 +67,8 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   std::uint64_t video_stop() override;
 
   SimSession& session();
+  // Physics steps per control frame of the selected robot (`watch ... every N` counts frames).
+  std::uint64_t steps_per_frame();
 
   // Serves the selected robot's controller (`serve`); the server follows it through load and
   // reset (the first robot after a load). Throws if the robot has no controller or on a bad port.

@@ -7,8 +7,11 @@
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
 #include "robot/runtime/console_key.hpp"
+#include "robot/runtime/finite_parameters.hpp"
+#include "robot/runtime/nao_io_modules.hpp"
 #include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/recorded_config.hpp"
+#include "robot/runtime/runtime_events.hpp"
 
 namespace stride {
 
@@ -75,6 +78,7 @@ Runtime::Runtime(const ModuleRegistry& registry, RuntimeConfig config, hal::Hard
       config_(std::move(config)),
       link_(link),
       guard_(lola_joint_limits(config_.model.get())) {
+  events_ = std::make_unique<RuntimeEvents>();
   sensor_ = &slot_value<hal::SensorFrame>(
       blackboard_slot("SensorFrame", typeid(hal::SensorFrame), &make_slot<hal::SensorFrame>));
   frame_info_ = &slot_value<FrameInfo>(
@@ -177,10 +181,39 @@ void Runtime::replan(const std::map<std::string, std::string>& chosen) {
   ++plan_generation_;
   times_->modules = order_;
   times_->ns.assign(order_.size(), 0);
+  // The fall line reads the IMU and its threshold where a controller has them.
+  auto inertial = by_name_.find(Reflect<InertialSensorData>::type_name());
+  inertial_ = inertial != by_name_.end() && inertial->second->type() == typeid(InertialSensorData)
+                  ? &slot_value<InertialSensorData>(*inertial->second)
+                  : nullptr;
+  auto conversion = parameters_.find("SensorConversion");
+  fall_params_ = conversion != parameters_.end() &&
+                         conversion->second->type() == typeid(SensorConversionParameters)
+                     ? &slot_value<SensorConversionParameters>(*conversion->second)
+                     : nullptr;
+}
+
+void Runtime::say_events() {
+  const double tilt = inertial_ ? inertial_->angles.cwiseAbs().maxCoeff() : -1;
+  std::vector<std::string> said;
+  events_->after_frame(frame_info_->time, tilt, fall_params_ ? fall_params_->fall_tilt : 0.8,
+                       *safety_, said);
+  for (auto& line : said) say(std::move(line));
+}
+
+void Runtime::say(std::string line) {
+  if (debug_.lines.size() < kMaxDebugLines)  // nobody taking them (a headless run) costs nothing
+    debug_.lines.push_back(std::move(line));
+  else
+    ++debug_.dropped_lines;
 }
 
 bool Runtime::step() {
-  if (!link_.read(*sensor_)) return false;
+  std::vector<std::string> said;
+  const bool read = link_.read(*sensor_);
+  events_->link_lost(!read, said);
+  for (auto& line : said) say(std::move(line));
+  if (!read) return false;
   frame_info_->time = sensor_->time;
   frame_info_->frame = frame_counter_++;
   frame_info_->period = link_.period();
@@ -193,6 +226,7 @@ bool Runtime::step() {
     command_ = guard_.last_safe();
     ++safety_->held_frames;
   }
+  say_events();
   link_.write(command_);
   if (log_) try {
       log_->write_frame();
@@ -239,6 +273,7 @@ void Runtime::record_fault(const std::string& module, const char* what) {
     }
   if (faults_.empty()) safety_->first_error = module + ": " + what;
   faults_.push_back({module, what, frame_info_->frame, 1});
+  say(RuntimeEvents::fault_line(module, what));
 }
 
 std::string Runtime::provider_of(const std::string& representation) const {
@@ -266,7 +301,10 @@ void Runtime::swap_provider(const std::string& representation, const std::string
   } else {
     chosen[representation] = module;
   }
+  const std::string before = provider_of(representation);
   replan(chosen);
+  if (overrides_.count(representation) && provider_of(representation) != before)
+    say(RuntimeEvents::swapped_override_line(representation, before, provider_of(representation)));
 }
 
 void Runtime::check_provider_choice(const std::string& representation,
@@ -293,7 +331,14 @@ void Runtime::check_provider_choice(const std::string& representation,
 void Runtime::set_parameters(const std::string& module, std::string_view text) {
   auto it = parameters_.find(module);
   if (it == parameters_.end()) throw Error("no module " + quote(module) + " with parameters");
-  it->second->update(text, module);
+  Slot& slot = *it->second;
+  Value v = slot.value();
+  update_value(slot.desc(), v, text, module);
+  refuse_nonfinite(slot.desc(), v, slot.fresh()->value(), module);  // all or nothing
+  std::string bytes;
+  ByteWriter w(bytes);
+  write_value(slot.desc(), v, w);
+  slot.decode(bytes);
 }
 
 std::string Runtime::get(std::string_view key) const {

@@ -24,6 +24,10 @@
 
 namespace stride {
 
+class RuntimeEvents;
+struct InertialSensorData;
+struct SensorConversionParameters;
+
 class Runtime {
  public:
   // Instantiates every registered module once to learn its declarations, applies the configured
@@ -138,6 +142,8 @@ class Runtime {
   void replan(const std::map<std::string, std::string>& chosen);
   bool run_modules();  // false: a module threw and the policy holds
   void record_fault(const std::string& module, const char* what);
+  void say_events();  // the frame's events as console lines (robot/runtime/runtime_events.hpp)
+  void say(std::string line);  // a console line, counted as dropped beyond kMaxDebugLines
 
   const ModuleRegistry& registry_;
   RuntimeConfig config_;
@@ -169,6 +175,9 @@ class Runtime {
   std::string log_stopped_;
   FrameBoundary* boundary_ = nullptr;
   std::uint64_t plan_generation_ = 0;
+  std::unique_ptr<RuntimeEvents> events_;
+  const InertialSensorData* inertial_ = nullptr;             // null: no IMU on the blackboard
+  const SensorConversionParameters* fall_params_ = nullptr;  // null: the default fall_tilt
 };
 
 }  // namespace stride

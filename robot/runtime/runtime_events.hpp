@@ -1,0 +1,36 @@
+#pragma once
+// Events a person debugging a robot must not miss, as one console line each ("event: ..."),
+// whatever debug requests are on: a fall, a module's first fault, a held override whose
+// provider was swapped, a command the guard limited, the hardware link lost. Each is said when
+// it starts, not every frame, so a walk lying on the floor does not flood the console.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "robot/representations/command_safety.hpp"
+
+namespace stride {
+
+class RuntimeEvents {
+ public:
+  // After every frame: `tilt` is the IMU's largest |roll| or |pitch| (negative: no IMU),
+  // `fall_tilt` the SensorConversion threshold.
+  void after_frame(double time, double tilt, double fall_tilt, const CommandSafety& safety,
+                   std::vector<std::string>& lines);
+  void link_lost(bool lost, std::vector<std::string>& lines);
+  static std::string fault_line(const std::string& module, const std::string& what);
+  static std::string swapped_override_line(const std::string& representation,
+                                           const std::string& from, const std::string& to);
+
+ private:
+  bool fallen_ = false;
+  double upright_since_ = -1;  // s, since a fallen robot stands upright again (-1: it does not)
+  static constexpr int kLostAfter = 5;  // reads without a frame before the link counts as lost
+  bool link_lost_ = false;
+  int failed_reads_ = 0;
+  CommandSafety last_;          // the counters at the end of the previous frame
+  double last_clamp_ = -1e300;  // s, the last frame with a clamped position
+  double last_nonfinite_ = -1e300;
+};
+
+}  // namespace stride
