@@ -196,11 +196,19 @@ const std::vector<CommandSpec>& command_table() {
       {"help", "help [pattern]", "list commands (matching pattern)", 0, 1, nullptr},
       {"load", "load <scene.xml>", "load a scene (runs <scene>.con next to it)", 1, 1, nullptr},
       {"reset", "reset", "rebuild the scene from its description", 0, 0, nullptr},
+      {"restart", "restart",
+       "the scenario from its start, to watch a walk from the beginning: the local simulation "
+       "resets (and runs, in the REPL); a connected robot restarts its scenario (stride run "
+       "--debug: the scene resets and runs; stride robot: its controller from its configuration)",
+       0, 0, nullptr},
       {"run", "run [seconds]", "run the simulation (without seconds: until Ctrl-C)", 0, 1,
        check_run},
       {"step", "step [frames]", "advance by simulation steps (default 1)", 0, 1, check_step},
       {"pause", "pause", "stop running", 0, 0, nullptr},
-      {"realtime", "realtime on|off", "pace runs to the wall clock", 1, 1, check_on_off},
+      {"realtime", "realtime on|off",
+       "pace runs to the wall clock (on by default in a terminal; off: as fast as possible, the "
+       "prompt then reads 'stride (fast)>')",
+       1, 1, check_on_off},
       {"get", "get <key> [?]", "print a value; ? prints the type description", 1, 2, check_get},
       {"set", "set <key> <field>=<value>... | set representation:X unchanged",
        "change fields, all or nothing; a representation's are held every frame until unchanged", 2,

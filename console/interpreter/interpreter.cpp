@@ -294,7 +294,9 @@ void Interpreter::dispatch(const Command& c) {
     running_ = true;
     start_pacing();
     out_ << "running from t=" << target().time_text()
-         << " (commands apply between frames; pause or Ctrl-C stops)\n";
+         << (realtime_ ? " in real time (realtime off: as fast as possible;"
+                       : " as fast as possible (realtime on: at the wall clock's pace;")
+         << " commands apply between frames; pause or Ctrl-C stops)\n";
     return;
   }
   if (n == "step") {

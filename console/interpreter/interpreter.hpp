@@ -62,6 +62,8 @@ class Interpreter {
   // Call while waiting for input: keeps connections alive, serves `serve` clients when paused.
   void idle();
   bool realtime() const { return realtime_; }
+  // A person at a terminal gets real time by default; scripts and pipes run as fast as possible.
+  void set_realtime(bool on) { realtime_ = on; }
   // Called after every step of an advance, before watches (the view samples and sends from it).
   void set_step_hook(std::function<void()> hook) { step_hook_ = std::move(hook); }
   // Keys read after every step besides watch/plot/until ones (a remote robot streams them).

@@ -75,7 +75,8 @@ void write_csv(const std::string& path, const Table& table) {
 std::string png_terminal() {
   // Asked once per process: the installed gnuplot does not change while we run.
   static const std::string terminal = [] {
-    FILE* pipe = popen("gnuplot -e 'set terminal' 2>&1", "r");
+    // Never the console's stdin: gnuplot's pager would eat the lines typed meanwhile.
+    FILE* pipe = popen("gnuplot -e 'set terminal' </dev/null 2>&1", "r");
     if (!pipe) return std::string();
     std::string text;
     char buf[256];

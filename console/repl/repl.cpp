@@ -148,6 +148,11 @@ class PipeInput {
   bool ended_ = false;
 };
 
+// The prompt says when runs go as fast as possible, so a walk over in a blink is no surprise.
+const char* prompt_of(const Interpreter& interpreter) {
+  return interpreter.realtime() ? "stride> " : "stride (fast)> ";
+}
+
 void on_terminal_line(char* raw) {
   TerminalSession& s = *g_terminal;
   if (!raw) {
@@ -162,6 +167,7 @@ void on_terminal_line(char* raw) {
   s.output->set_prompt_shown(false);
   s.interpreter->execute_reporting(line);
   std::cout.flush();
+  rl_set_prompt(prompt_of(*s.interpreter));
   s.output->set_prompt_shown(true);
 }
 
@@ -170,7 +176,7 @@ void on_terminal_line(char* raw) {
 class TerminalInput {
  public:
   explicit TerminalInput(TerminalSession& session) : session_(session) {
-    rl_callback_handler_install("stride> ", on_terminal_line);
+    rl_callback_handler_install(prompt_of(*session_.interpreter), on_terminal_line);
     session_.output->set_prompt_shown(true);
   }
   ~TerminalInput() {
@@ -228,6 +234,7 @@ int run_repl(Interpreter& interpreter) {
   struct sigaction previous {};
   sigaction(SIGINT, &action, &previous);
   if (isatty(STDIN_FILENO)) {
+    interpreter.set_realtime(true);  // a person typing sees the walk at its pace
     terminal_loop(interpreter);
   } else {
     PipeInput input(interpreter);
