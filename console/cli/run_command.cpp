@@ -1,6 +1,7 @@
 // `stride run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png]
 // [--video walk.apng|walk.mp4|dir ...] [--view v] [--fps N] [--no-overlay] [--set
-// Module.field=value ...] [--lola <socket> ...] [--debug addr:port [--token-file f]
+// Module.field=value ...] [--physics a=v,b=w] [--lola <socket> ...] [--debug addr:port
+// [--token-file f]
 // [--log-dir d]]`: a headless run, optionally with pictures and a movie, optionally with a robot
 // on LoLA (lola_run.hpp), or served to debug consoles in real time (debug_run.hpp). Output paths
 // are checked before the run; Ctrl-C ends the run early and still writes its report. With
@@ -25,6 +26,8 @@
 #include "console/progress/progress_line.hpp"
 #include "console/session/headless_run.hpp"
 #include "console/session/sim_session.hpp"
+#include "console/sweep/scene_edit.hpp"
+#include "console/sweep/sweep_request.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
 #include "simulator/render/movie_file.hpp"
@@ -85,6 +88,12 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
     std::vector<ParameterOverride> overrides;
     for (const std::string& set : a.texts("--set"))
       overrides.push_back(parse_parameter_override(set, "stride run: --set"));
+    std::vector<sweep::Setting> physics;  // as `stride sweep` and `experiment` take them
+    if (a.has("--physics")) try {
+        physics = sweep::physics_settings(a.text("--physics"));
+      } catch (const Error& e) {
+        throw UsageError(std::string("stride run: ") + e.what());
+      }
     const std::string view = a.text_or("--view", "");
     const double fps = a.number_or("--fps", 25.0);
     DebugRun debug{a.text_or("--debug", ""), a.text_or("--token-file", ""),
@@ -99,7 +108,8 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
           "stride run: --debug: serve the LoLA robot with 'stride robot --debug' instead");
     check_outputs(report, log, snapshot, videos);
 
-    sim::SceneDescription description = sim::parse_scene_file(scene);
+    sim::SceneDescription description =
+        physics.empty() ? sim::parse_scene_file(scene) : sweep::load_edited_scene(scene, physics);
     if (seed) description.physics.seed = *seed;
     console::add_parameter_overrides(description, overrides, "stride run: --set");
     console::SimSession session(lola_scene(std::move(description), lola));

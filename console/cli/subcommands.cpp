@@ -34,15 +34,16 @@ const std::vector<Subcommand>& subcommands() {
        "0,180 [--duration s] [--csv f] [--json]: Ch. 7 push experiments",
        push_sweep_main},
       {"run",
-       "run <scene> --seconds S [--seed N] [--report out.json] [--log file] [--snapshot f.png] "
+       "run <scene> --seconds S [--seed N] [--physics a=v,b=w] [--report out.json] [--log file] "
+       "[--snapshot f.png] "
        "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] [--lola <socket> "
        "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] [--debug "
        "addr:port [--token-file f] [--log-dir d]] | run <scene> "
        "--ensemble N [--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] "
        "[--jobs N]: headless simulation (--lola: that robot is served over a LoLA socket); "
-       "--debug: served to consoles in real time until --seconds or Ctrl-C; --ensemble: N "
-       "perturbed "
-       "starts, the walk's spread and fall count",
+       "--physics: physics settings over the scene's, e.g. engine=mujoco; --debug: served to "
+       "consoles in real time until --seconds or Ctrl-C, paused until the first console "
+       "connects; --ensemble: N perturbed starts, the walk's spread and fall count",
        run_main},
       {"robot", kRobotUsage, robot_main},
       {"lola", kLolaUsage, lola_main},
