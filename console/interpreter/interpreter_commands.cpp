@@ -154,12 +154,24 @@ void Interpreter::log(const std::vector<std::string>& a) {
     if (!skipped.empty()) out_ << " (" << skipped.size() << " representation(s) skipped)";
     out_ << "\n";
   } else if (what == "export") {
-    local_.log_export(a[1], {a.begin() + 2, a.end()});
+    std::vector<std::string> keys;  // the keys `get` takes: representation:X.path, or X.path
+    for (auto k = a.begin() + 2; k != a.end(); ++k) {
+      if (k->starts_with("module:"))
+        throw Error("log export: " + *k + ": a log holds representations, not parameters");
+      keys.push_back(k->starts_with("representation:") ? k->substr(15) : *k);
+    }
+    local_.log_export(a[1], keys);
     out_ << "wrote " << a[1] << "\n";
   } else if (what == "info") {
     for (const auto& line : local_.log_info()) out_ << line << "\n";
   } else if (what == "replay") {
-    const ReplaySummary r = simulation("log replay").log_replay();
+    // The console's own log player: it replays through this console's simulated controllers.
+    if (!local_.loaded())
+      throw Error(
+          "log replay: runs the log through a simulated NAO's controllers here, with the providers "
+          "and parameters the log recorded: load a scene first (e.g. load "
+          "nao_stand_controlled.xml)");
+    const ReplaySummary r = local_.log_replay();
     out_ << "replayed " << r.frames << " frames, compared " << r.compared
          << " representations: " << r.mismatch_count << " mismatch(es)";
     if (r.stopped) out_ << " (stopped before damaged frame " << r.stopped_at << ")";

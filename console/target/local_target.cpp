@@ -79,6 +79,7 @@ void LocalTarget::load(const std::string& scene_path) {
   detach_server();
   session_ = std::move(fresh);
   selected_ = served_ = 0;
+  shown_frame_.reset();
   stepping_wall_ = 0;
   swapped_.clear();
   video_.stop();  // a recording belongs to the scene it started in
@@ -88,6 +89,7 @@ void LocalTarget::load(const std::string& scene_path) {
 void LocalTarget::reset() {
   detach_server();
   session().reset();
+  shown_frame_.reset();
   stepping_wall_ = 0;
   swapped_.clear();
   attach_server();
@@ -95,6 +97,7 @@ void LocalTarget::reset() {
 
 std::uint64_t LocalTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
   auto& sim = session().simulation();
+  shown_frame_.reset();  // the simulation moves on: robot.* is its robot again
   const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t done = 0;
   while (done < steps) {
@@ -139,6 +142,7 @@ std::string LocalTarget::sim_value(const std::string& key) {
   if (key == "robot.name") return robot().name();
   const auto& r = robot();
   if (key == "robot.fell") return r.fallen() ? "true" : "false";
+  if (shown_frame_ && key.starts_with("robot.")) return logged_robot_value(key);
   const sim::TorsoPose p = r.torso_pose();
   const std::pair<const char*, double> torso[] = {
       {"robot.torso.x", p.x},       {"robot.torso.y", p.y},         {"robot.torso.z", p.z},
@@ -153,6 +157,18 @@ std::string LocalTarget::sim_value(const std::string& key) {
               "' (sim.time|steps|hash, robot.name|fell, robot.torso.x|y|z|roll|pitch|yaw, "
               "robot.com.x|y|z, log.frames|complete|damaged|truncated|mismatches|compared|"
               "replayed, provider:, override:, debug:)");
+}
+
+// While `log goto` shows a frame, robot.* keys are the logged robot's: what its IMU measured.
+// A log holds no world pose, so position and yaw are refused rather than taken from the
+// simulation, which stands elsewhere.
+std::string LocalTarget::logged_robot_value(const std::string& key) {
+  if (key == "robot.torso.roll" || key == "robot.torso.pitch")
+    return runtime().get(std::string("representation:InertialSensorData.angles[") +
+                         (key == "robot.torso.roll" ? "0" : "1") + "]");
+  throw Error(key + ": log frame " + std::to_string(*shown_frame_) +
+              " is shown and a log holds no world pose (robot.torso.roll|pitch come from its "
+              "IMU; run, step or reset return to the simulation)");
 }
 
 std::string LocalTarget::get(const std::string& key) {
@@ -251,7 +267,9 @@ std::vector<std::string> LocalTarget::log_goto(std::size_t frame) {
     throw Error("frame " + std::to_string(frame) + " is outside the log's " +
                 (log_->frame_count() ? "0.." + std::to_string(log_->frame_count() - 1)
                                      : std::string("frames (it has none)")));
-  return runtime().load_frame(*log_, frame);
+  auto skipped = runtime().load_frame(*log_, frame);
+  shown_frame_ = frame;
+  return skipped;
 }
 
 void LocalTarget::log_export(const std::string& csv_path, const std::vector<std::string>& keys) {
@@ -335,6 +353,11 @@ render::WorldRenderer& LocalTarget::renderer() {
 }
 
 void LocalTarget::snapshot(const std::string& png_path, const std::string& view) {
+  if (shown_frame_)
+    throw Error("snapshot: log frame " + std::to_string(*shown_frame_) +
+                " is on the blackboard, but a picture would show the simulation, not the logged "
+                "robot (stride view --log <file> draws a log's robot; run, step or reset return "
+                "to the simulation)");
   render::write_snapshot(renderer(), session().simulation(), png_path, view, selected_);
 }
 

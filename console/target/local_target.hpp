@@ -85,10 +85,12 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   sim::SimulatedRobot& robot();  // the selected one; throws without robots
   render::WorldRenderer& renderer();
   std::string sim_value(const std::string& key);
+  std::string logged_robot_value(const std::string& key);
 
   std::unique_ptr<SimSession> session_;
   std::unique_ptr<LogReader> log_;
   std::optional<ReplaySummary> replay_;
+  std::optional<std::size_t> shown_frame_;           // `log goto`: the frame on the blackboard
   std::unique_ptr<render::WorldRenderer> renderer_;  // made at the first picture
   render::VideoRecorder video_;
   int selected_ = 0;       // robot index
