@@ -21,20 +21,39 @@ double serve_simulation(console::SimSession& session, const DebugRun& run, std::
   options.log_dir = run.log_dir;
   options.robot = sim.robot(0).name();
   debug::DebugServer server(std::move(options));
+  server.allow_restart();  // `restart`: the scene from its start, as `reset` and `run` do
   rt->set_frame_boundary(&server.boundary());
   out << "debug server on " << server.endpoint().text() << " serving robot " << sim.robot(0).name()
       << " (connect " << server.endpoint().text() << ")" << std::endl;
+  // A console connecting a moment late must not miss the walk: it starts with the first one.
+  out << "paused at t=" << sim.time() << " until the first console connects" << std::endl;
+  while (!stop.requested() && server.stats().clients == 0) {
+    server.idle(*rt);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!stop.requested()) out << "a console connected: running" << std::endl;
 
-  const double start = sim.time();
-  const auto wall_start = std::chrono::steady_clock::now();
+  double start = sim.time();
+  double ran = 0;  // s of simulated time before the last restart
+  auto wall_start = std::chrono::steady_clock::now();
   while (!stop.requested() && (!run.seconds || sim.time() - start < *run.seconds - 1e-9)) {
+    if (server.take_restart()) {
+      ran += sim.time() - start;
+      rt->set_frame_boundary(nullptr);
+      session.reset();
+      rt = session.runtime(0);
+      rt->set_frame_boundary(&server.boundary());
+      start = sim.time();
+      wall_start = std::chrono::steady_clock::now();
+      out << "restarted the scene (a console asked)" << std::endl;
+    }
     sim.step();
     const auto due = wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                       std::chrono::duration<double>(sim.time() - start));
     std::this_thread::sleep_until(due);
   }
   rt->set_frame_boundary(nullptr);
-  return sim.time() - start;
+  return ran + sim.time() - start;
 }
 
 }  // namespace stride::cli

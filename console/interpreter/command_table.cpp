@@ -219,8 +219,9 @@ const std::vector<CommandSpec>& command_table() {
        "debug request: on prints its lines and values (debug:<name>.<value>), quiet only the "
        "values; dr ? lists them",
        1, 2, check_dr},
-      {"watch", "watch <key>... [every N] | watch off", "print values every N steps while running",
-       1, -1, check_watch},
+      {"watch", "watch <key>... [every N] | watch off",
+       "print values every N control frames while running (locally and remotely alike)", 1, -1,
+       check_watch},
       {"plot", "plot <key>... [to file.csv] | plot stop", "record values; stop writes CSV + PNG", 1,
        -1, check_plot},
       {"log",

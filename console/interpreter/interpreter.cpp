@@ -263,6 +263,22 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
   return wait;
 }
 
+void Interpreter::restart() {
+  pause_run();
+  if (remote_) {
+    remote_->restart();
+    out_ << "restarted " << remote_->name() << "\n";
+  } else {
+    simulation("restart").reset();
+    out_ << "reset " << local_.name() << "\n";
+  }
+  if (!interrupt_) return;  // a script goes on with its own `run`
+  running_ = true;
+  start_pacing();
+  out_ << "running from t=" << target().time_text() << (realtime_ ? " in real time" : "")
+       << " (pause or Ctrl-C stops)\n";
+}
+
 void Interpreter::pause_run() {
   if (!running_) return;
   running_ = false;
@@ -286,6 +302,7 @@ void Interpreter::dispatch(const Command& c) {
     out_ << "reset " << local_.name() << "\n";
     return;
   }
+  if (n == "restart") return restart();
   if (n == "run" || n == "step" || n == "wait") refuse_while_running(n);
   if (n == "run") {
     if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));

@@ -54,6 +54,8 @@ class Interpreter {
   std::chrono::steady_clock::duration run_slice(std::chrono::steady_clock::duration budget);
   // Ctrl-C during a background run.
   void pause_run();
+  // `restart`: the target's scenario from its start, running again in the REPL.
+  void restart();
   // The robot commands act on now: a connected remote robot, or the local simulation's.
   RobotTarget& target();
   LocalTarget& local() { return local_; }

@@ -72,7 +72,8 @@ void Interpreter::watch(const std::vector<std::string>& a) {
   }
   for (const auto& k : keys) value(k);  // unknown keys fail now, not while running
   watch_keys_ = std::move(keys);
-  watch_every_ = every;
+  // Control frames, locally as on a robot: a simulation steps its physics several times a frame.
+  watch_every_ = every * (remote_ ? 1 : local_.steps_per_frame());
   steps_since_watch_ = 0;
 }
 

@@ -74,13 +74,16 @@ int console_main(const std::vector<std::string>& args, std::ostream& out, std::o
   LocalTarget target;
   Interpreter interpreter(target, out);
   const bool batch = !c.script.empty() || c.has_inline;
+  bool connecting = false;  // a failed --connect is an error, never a local console instead
   try {
     if (!c.scene.empty()) interpreter.execute("load " + quoted_word(c.scene));
     if (!c.connect.empty()) {
+      connecting = true;
       const std::string token =
           c.token_file.empty() ? "" : debug::read_token_file(c.token_file).front().secret;
       interpreter.execute("connect " + quoted_word(c.connect) +
                           (token.empty() ? std::string() : " " + quoted_word(token)));
+      connecting = false;
     }
     if (!c.script.empty()) interpreter.run_script(c.script);
     if (c.has_inline) interpreter.run_inline(c.inline_commands);
@@ -88,7 +91,7 @@ int console_main(const std::vector<std::string>& args, std::ostream& out, std::o
   } catch (const Error& e) {
     out.flush();
     const int code = cli::report_error(e, err);
-    if (batch) return code;
+    if (batch || connecting) return code;
   }
   return batch ? 0 : run_repl(interpreter);
 }

@@ -150,6 +150,11 @@ std::optional<std::vector<ModuleDeclaration>> RemoteTarget::module_declarations(
   return debug::module_graph_of(call(request(Op::List))->fields());
 }
 
+void RemoteTarget::restart() {
+  call(request(Op::Restart));
+  current_.reset();
+}
+
 void RemoteTarget::swap_provider(const std::string& representation, const std::string& module) {
   call(request(Op::Mr, representation, module));
 }

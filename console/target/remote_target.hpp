@@ -53,6 +53,8 @@ class RemoteTarget final : public RobotTarget {
   std::string report_text() override;
   std::string report_json() override;
 
+  // The robot's scenario from its start (Op::Restart); throws if its server does not restart.
+  void restart();
   // Pings and reads what arrived while the console waits for input.
   void keep_alive() { client_->keep_alive(); }
 

@@ -47,6 +47,7 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
       options.log_dir = f.value_or("--log-dir", ".");
       options.robot = name;
       server = std::make_unique<debug::DebugServer>(std::move(options));
+      server->allow_restart();  // `restart` rebuilds the controller from its configuration
       robot->set_frame_boundary(&server->boundary());
       err << "stride robot: debug server on " << server->endpoint().text() << std::endl;
     }
@@ -59,7 +60,8 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
   }
   int code = kRobotModuleFailed;
   try {
-    code = robot->run([&] { return stop.requested(); });
+    code = robot->run([&] { return stop.requested(); },
+                      [&] { return server && server->take_restart(); });
   } catch (
       const std::exception& e) {  // whatever escaped the loop: one line and the summary, no abort
     err << "stride robot: the control loop stopped: " << one_line(e.what(), 200) << std::endl;

@@ -29,7 +29,7 @@ std::string ms(double seconds) {
 }  // namespace
 
 RobotProcess::RobotProcess(RobotConfig config, const ModuleRegistry& registry, std::ostream& events)
-    : config_(std::move(config)), events_(events) {
+    : config_(std::move(config)), registry_(registry), events_(events) {
   std::shared_ptr<const model::RobotModel> model;
   try {
     model = std::make_shared<const model::RobotModel>(model::load_urdf(config_.urdf));
@@ -41,6 +41,7 @@ RobotProcess::RobotProcess(RobotConfig config, const ModuleRegistry& registry, s
                    ModuleErrorPolicy::Hold, LogErrorPolicy::StopLogging};
   link_ =
       hal::lola::LolaLink::connect(config_.lola_socket, config_.period, config_.connect_timeout);
+  runtime_config_ = rc;
   try {
     runtime_ = std::make_unique<Runtime>(registry, rc, *link_);
   } catch (const Error& e) {
@@ -102,13 +103,27 @@ bool RobotProcess::link_down(double& lost_for) {
   return true;
 }
 
-int RobotProcess::run(const std::function<bool()>& stop_requested) {
+void RobotProcess::restart_controller() {
+  runtime_->set_frame_boundary(nullptr);  // a client's log of the old controller ends, said
+  runtime_ = std::make_unique<Runtime>(registry_, runtime_config_, *link_);
+  runtime_->set_frame_boundary(boundary_);
+  faults_reported_ = 0;
+  events_ << "stride robot: frame " << frames_
+          << ": controller restarted from its configured start (a console asked)" << std::endl;
+}
+
+int RobotProcess::run(const std::function<bool()>& stop_requested,
+                      const std::function<bool()>& restart_requested) {
   ControllerSchedule schedule(config_.controller.changes);
   events_ << "stride robot: " << config_.name << " on LoLA " << config_.lola_socket << " ("
           << config_.period * 1e3 << " ms), modules:";
   for (const auto& m : runtime_->module_order()) events_ << " " << m;
   events_ << std::endl;
   while (!stop_requested()) {
+    if (restart_requested && restart_requested()) {
+      restart_controller();
+      schedule = ControllerSchedule(config_.controller.changes);
+    }
     // Changes due at the coming frame's time (LoLA's clock: one period per packet).
     schedule.apply_due(*runtime_,
                        hal::lola::lola_frame_time(link_->stats().packets, config_.period));

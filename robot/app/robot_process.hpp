@@ -34,9 +34,14 @@ class RobotProcess {
 
   void start_log(const std::string& path) { runtime_->start_log(path); }
   // Called after every frame (a debug server's side of the loop); nullptr: none. Not owned.
-  void set_frame_boundary(FrameBoundary* boundary) { runtime_->set_frame_boundary(boundary); }
-  // Runs until `stop_requested()` (asked between frames) or a fault ends the run.
-  int run(const std::function<bool()>& stop_requested);
+  void set_frame_boundary(FrameBoundary* boundary) {
+    boundary_ = boundary;
+    runtime_->set_frame_boundary(boundary);
+  }
+  // Runs until `stop_requested()` (asked between frames) or a fault ends the run. Between frames
+  // `restart_requested` (may be empty), when true, rebuilds the controller from its configuration.
+  int run(const std::function<bool()>& stop_requested,
+          const std::function<bool()>& restart_requested = {});
   // What happened, for the end of a run: frames, link, safety and module counts.
   std::string summary() const;
 
@@ -46,8 +51,12 @@ class RobotProcess {
  private:
   bool link_down(double& lost_for);  // false: give up (timeout)
   void report_frame_events();
+  void restart_controller();  // the configured controller, fresh, on the same link
 
   RobotConfig config_;
+  const ModuleRegistry& registry_;
+  RuntimeConfig runtime_config_;
+  FrameBoundary* boundary_ = nullptr;
   std::ostream& events_;
   std::unique_ptr<hal::lola::LolaLink> link_;
   std::unique_ptr<Runtime> runtime_;

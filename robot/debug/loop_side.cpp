@@ -105,6 +105,10 @@ LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
         log->close();
         break;
       }
+      case Op::Restart:  // done by the loop's owner after this frame (take_restart)
+        if (!restartable_) throw Error("restart: this robot's loop cannot restart its scenario");
+        restart_ = true;
+        break;
       case Op::List:
       case Op::Report:
         out.state = std::make_shared<RobotState>(robot_state(rt, robot_, log_file_, log_.get()));

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "robot/debug/exchange.hpp"
@@ -35,6 +36,9 @@ class LoopSide final : public FrameBoundary {
 
   // The debug output taken from the runtime since the last call (with keep_debug_output).
   DebugText take_kept_debug_output();
+  // `restart` requests are refused unless the loop's owner polls take_restart() and does them.
+  void allow_restart() { restartable_ = true; }
+  bool take_restart() { return std::exchange(restart_, false); }
 
   static constexpr int kRequestsPerFrame = 16;
   static constexpr std::size_t kMaxHeldLines = 1000;  // per client stream; more are counted
@@ -45,6 +49,7 @@ class LoopSide final : public FrameBoundary {
   LoopReply apply(Runtime& rt, LoopRequest& r);
   bool wanted_changed();
   bool publish(bool new_frame);
+  void encode_wanted(Snapshot& s);
   void take_debug_output(Runtime& rt);
   bool push_catalogue();
   void start_log(Runtime& rt, const LoopRequest& in);
@@ -55,6 +60,8 @@ class LoopSide final : public FrameBoundary {
   Exchange& x_;
   std::string robot_;
   const Runtime* runtime_ = nullptr;
+  bool restartable_ = false;
+  bool restart_ = false;  // a client asked for a restart
   std::uint64_t plan_generation_ = 0;
   std::uint64_t generation_ = 0;
   std::shared_ptr<const Catalogue> pending_catalogue_;  // not yet taken by the ring

@@ -16,7 +16,7 @@ struct OpName {
   std::string_view name;
   bool writes;
 };
-constexpr std::array<OpName, 14> kOps = {{{Op::List, "list", false},
+constexpr std::array<OpName, 15> kOps = {{{Op::List, "list", false},
                                           {Op::Get, "get", false},
                                           {Op::Set, "set", true},
                                           {Op::Mr, "mr", true},
@@ -29,7 +29,8 @@ constexpr std::array<OpName, 14> kOps = {{{Op::List, "list", false},
                                           {Op::LogFetch, "log_fetch", false},
                                           {Op::Report, "report", false},
                                           {Op::Ping, "ping", false},
-                                          {Op::Value, "value", false}}};
+                                          {Op::Value, "value", false},
+                                          {Op::Restart, "restart", true}}};
 
 Op op_from(const std::string& name) {
   for (const auto& o : kOps)

@@ -35,6 +35,8 @@ enum class Op {
   Report,       // on: JSON instead of text
   Ping,         //
   Value,        // key: provider:X, override:X or debug:X.y -> text, as the console prints it
+  Restart,      // the scenario from its start: a simulation resets and runs, a robot rebuilds its
+                // controller from its configuration (where the server's owner does restarts)
 };
 std::string_view op_name(Op op);
 // Refused on a read-only token: everything that changes the robot.

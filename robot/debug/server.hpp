@@ -34,6 +34,9 @@ class DebugServer {
   // With ServerOptions::keep_debug_output: what the runtime's debug requests printed since the
   // last call (the loop side takes it from the runtime after every frame).
   DebugText take_kept_debug_output() { return loop_.take_kept_debug_output(); }
+  // The owner of the loop restarts its scenario when this returns true (after allow_restart()).
+  void allow_restart() { loop_.allow_restart(); }
+  bool take_restart() { return loop_.take_restart(); }
   ServerStats stats() const;
 
  private:

@@ -19,7 +19,7 @@ class CompletionTest : public ::testing::Test {
 };
 
 TEST_F(CompletionTest, CommandNames) {
-  EXPECT_EQ(complete({}, "re", target), (Words{"realtime", "report", "reset"}));
+  EXPECT_EQ(complete({}, "re", target), (Words{"realtime", "report", "reset", "restart"}));
   EXPECT_EQ(complete({}, "ex", target), (Words{"expect"}));
   EXPECT_TRUE(complete({}, "zz", target).empty());
 }

@@ -116,11 +116,16 @@ TEST_F(InterpreterTest, WaitUntilStopsAtTheFirstStepThatSatisfiesTheCondition) {
   EXPECT_NEAR(number("sim.time"), 0.133, 1e-12);
 }
 
-TEST_F(InterpreterTest, WatchPrintsEveryNSteps) {
-  run("watch sim.steps every 10");
-  const std::string printed = run("step 35");
-  EXPECT_EQ(std::count(printed.begin(), printed.end(), '\n'), 3);
-  EXPECT_NE(printed.find("sim.steps=30"), std::string::npos);
+// `every N` counts control frames, as on a remote robot (issue 49 point 8), not physics steps.
+TEST_F(InterpreterTest, WatchPrintsEveryNControlFrames) {
+  const std::uint64_t per = target.steps_per_frame();
+  EXPECT_EQ(per, std::llround(0.01 / target.step_seconds()));  // the NAO v4 DCM's 10 ms
+  ASSERT_GT(per, 1u);
+  run("watch sim.steps every 3");
+  const std::string printed = run("step " + std::to_string(3 * per * 3 + per));
+  EXPECT_EQ(std::count(printed.begin(), printed.end(), '\n'), 3) << printed;
+  EXPECT_NE(printed.find("sim.steps=" + std::to_string(3 * per) + "\n"), std::string::npos)
+      << printed;
   run("watch off");
   EXPECT_EQ(run("step 20"), "");
   EXPECT_NE(error_of("watch robot.nothing"), "");
