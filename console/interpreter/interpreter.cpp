@@ -8,6 +8,7 @@
 #include <sstream>
 #include <thread>
 
+#include "console/interpreter/console_plot.hpp"
 #include "console/interpreter/tokenizer.hpp"
 #include "console/interpreter/values.hpp"
 #include "console/session/sim_session.hpp"
@@ -166,6 +167,13 @@ void Interpreter::record_plot_row() {
     row.push_back(v);
   }
   plot_table_.add_row(std::move(row));
+  // A person watching a background run sees the plot grow: one line every few seconds.
+  const auto now = std::chrono::steady_clock::now();
+  if (running_ && now - plot_live_ > std::chrono::seconds(3)) {
+    if (plot_live_ != std::chrono::steady_clock::time_point{})
+      out_ << live_summary(plot_table_) << " (plot stop draws it)\n";
+    plot_live_ = now;
+  }
 }
 
 bool Interpreter::after_step() {

@@ -135,6 +135,7 @@ class Interpreter {
   std::string plot_file_;
   std::string log_path_;  // log being recorded or last recorded/loaded, for `log save`
   plot::Table plot_table_;
+  std::chrono::steady_clock::time_point plot_live_;  // the last live line of a recording plot
 
   std::chrono::steady_clock::time_point pace_start_;  // realtime: wall time of step 0
   std::uint64_t paced_steps_ = 0;                     // steps since pace_start_

@@ -2,9 +2,11 @@
 // report, video, expect, wait until.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ostream>
 
 #include "console/interpreter/command_table.hpp"
+#include "console/interpreter/console_plot.hpp"
 #include "console/interpreter/interpreter.hpp"
 #include "console/interpreter/key_units.hpp"
 #include "console/interpreter/values.hpp"
@@ -94,6 +96,7 @@ void Interpreter::plot(const std::vector<std::string>& a) {
   plot_keys_ = std::move(keys);
   plot_file_ = file;
   plot_table_ = plot::Table{};
+  plot_live_ = {};
   plot_table_.columns.push_back("t");
   for (const auto& k : plot_keys_) plot_table_.columns.push_back(k);
   out_ << "recording " << plot_keys_.size() << " value(s) to " << plot_file_
@@ -111,23 +114,32 @@ void Interpreter::finish() {
     return;
   }
   plot::PlotSpec spec;
-  spec.csv_path = plot_file_;
   spec.x_column = "t";
+  spec.key = "outside below";  // long key names take rows, not the graph's width
+  std::vector<std::string> units;
   // One panel per unit, in the order the keys first name them: no axis mixes units.
   for (const auto& k : keys) {
     const std::string unit = unit_of_key(target(), k);
+    units.push_back(unit);
     const std::string label = "[" + (unit.empty() ? std::string("-") : unit) + "]";
     auto panel = std::find_if(spec.panels.begin(), spec.panels.end(),
                               [&](const plot::Panel& p) { return p.y_label == label; });
     if (panel == spec.panels.end())
       panel = spec.panels.insert(spec.panels.end(), {label, {}, {}, ""});
-    panel->series.push_back({k, k, ""});
+    panel->series.push_back({k, legend_label(k), ""});
   }
   spec.title = plot_file_;
   spec.x_label = "t [s]";
   const auto dot = plot_file_.rfind('.');
-  spec.png_path = (dot == std::string::npos ? plot_file_ : plot_file_.substr(0, dot)) + ".png";
+  const std::string base = dot == std::string::npos ? plot_file_ : plot_file_.substr(0, dot);
+  spec.png_path = base + ".png";
+  // What is drawn: angles unwrapped, at most ~4000 rows (the CSV above keeps every row).
+  plot::Table drawn = std::move(plot_table_);
+  unwrap_angles(drawn, units);
+  spec.csv_path = base + ".drawn.csv";
+  plot::write_csv(spec.csv_path, decimated(drawn, 4000));
   plot::render_png(spec);
+  std::remove(spec.csv_path.c_str());
   out_ << "wrote " << spec.png_path << "\n";
 }
 

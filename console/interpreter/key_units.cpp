@@ -47,6 +47,19 @@ std::string unit_of_key(RobotTarget& target, const std::string& key) {
     return axis == "x" || axis == "y" || axis == "z" ? "m" : "rad";
   }
   if (key.starts_with("robot.com.")) return "m";
+  if (key.starts_with("debug:")) return unit_of_debug_value(key.substr(key.rfind('.') + 1));
+  return "";
+}
+
+// The modules' debug values carry no field list, so their names say the unit: angles and their
+// rates by name, positions (ZMP, CoP, CoM, x/y/z) in metres.
+std::string unit_of_debug_value(std::string_view name) {
+  auto has = [&](std::string_view part) { return name.find(part) != std::string_view::npos; };
+  const bool angle = has("pitch") || has("roll") || has("yaw") || has("angle") || has("theta");
+  if (angle) return has("rate") || has("velocity") ? "rad/s" : "rad";
+  if (has("zmp") || has("cop") || has("com") || name == "error" || name.ends_with("_x") ||
+      name.ends_with("_y") || name.ends_with("_z"))
+    return "m";
   return "";
 }
 

@@ -188,7 +188,7 @@ std::string gnuplot_script(const PlotSpec& spec, const std::vector<std::string>&
   s << "set terminal " << terminal << " size " << spec.width << "," << height
     << (terminal == "pngcairo" ? " enhanced font 'Sans,10'" : "") << "\n";
   s << "set output " << quoted(spec.png_path) << "\n";
-  s << "set datafile separator ','\nset datafile missing 'NaN'\nset key outside right\n";
+  s << "set datafile separator ','\nset datafile missing 'NaN'\nset key " << spec.key << "\n";
   s << "set grid\nset xlabel " << quoted(spec.x_label) << "\n";
   if (!spec.x_range.empty()) s << "set xrange " << spec.x_range << "\n";
   if (n == 1)

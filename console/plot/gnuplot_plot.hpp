@@ -70,6 +70,7 @@ struct PlotSpec {
   std::string y_range;
   std::vector<Reference> references;
   std::vector<Panel> panels;
+  std::string key = "outside right";  // gnuplot legend placement, e.g. "outside below"
 };
 
 // True when `label` ends in a bracketed unit: "t [s]", "[rad]", "K_p [-]".
