@@ -6,6 +6,7 @@
 #include "console/cli/exit_codes.hpp"
 #include "console/interpreter/command_table.hpp"
 #include "console/interpreter/help_search.hpp"
+#include "console/interpreter/help_topics.hpp"
 #include "console/repl/console_entry.hpp"
 #include "robot/core/data_dir.hpp"
 
@@ -33,7 +34,7 @@ void print_everything(std::ostream& out) {
   out << "console commands (in the REPL, scripts and -c; help <word> there too):\n";
   for (const auto& c : console::command_table()) print_console_command(c, out);
   out << console::help_text("keys");
-  out << kExitCodes << data_dir_line() << "\n";
+  out << console::help_topic_list() << kExitCodes << data_dir_line() << "\n";
 }
 
 }  // namespace
@@ -57,7 +58,9 @@ int help_main(Args args, std::ostream& out) {
   const auto console_entries = console::help_entries();
   entries.insert(entries.end(), console_entries.begin(), console_entries.end());
   const auto found = console::find_help(entries, word);
-  if (found.empty()) out << "nothing matches '" << word << "'\n";
+  const std::string topic = console::help_topic_text(word);  // the answer first, then commands
+  out << topic;
+  if (found.empty() && topic.empty()) out << "nothing matches '" << word << "'\n";
   std::vector<std::size_t> in_console;
   for (const std::size_t i : found) {
     if (i >= first_console) {

@@ -1,6 +1,7 @@
 #include "console/interpreter/command_table.hpp"
 
 #include "console/interpreter/help_search.hpp"
+#include "console/interpreter/help_topics.hpp"
 #include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
@@ -315,8 +316,9 @@ std::string help_text(const std::string& word) {
   } else {
     shown = find_help(entries, word);
   }
-  if (shown.empty()) return "no command or key matches '" + word + "'\n";
-  return help_listing(shown);
+  const std::string topic = help_topic_text(word);  // a topic's answer before the commands
+  if (shown.empty()) return topic.empty() ? "no command or key matches '" + word + "'\n" : topic;
+  return topic + help_listing(shown) + (word.empty() ? help_topic_list() : "");
 }
 
 std::string help_listing(const std::vector<std::size_t>& shown) {
