@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "console/experiments/fastest_search.hpp"
+#include "console/experiments/figure_index.hpp"
 #include "console/experiments/kalman_experiment.hpp"
 #include "console/experiments/landing_figures.hpp"
 #include "console/experiments/posture_figures.hpp"
@@ -85,6 +86,7 @@ int run_sweep_experiment(const std::string& name, const ExperimentOptions& o, st
   if (name == "position-push" && !o.out_dir.empty()) write_phase_portraits(o.out_dir, o.plots);
   if (name == "push-recovery" && !o.out_dir.empty()) write_push_map(o.out_dir, o.plots);
   if (name == "landing-control" && !o.out_dir.empty()) write_landing_figure(o.out_dir, o.plots);
+  if (!o.out_dir.empty() && o.plots) print_figure_index(o.out_dir, name, out);
   if (result->failed == 0) return 0;
   err << "stride experiment " << name << ": " << result->failed
       << " walk(s) failed (listed with their reasons above)\n";

@@ -29,6 +29,14 @@ bool prepare_out_dir(const ExperimentOptions& o) {
   return true;
 }
 
+void make_figure_dir(const ExperimentOptions& o, const std::string& folder) {
+  if (o.out_dir.empty()) return;
+  const std::filesystem::path dir = std::filesystem::path(o.out_dir) / folder;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw Error("cannot create directory '" + dir.string() + "': " + ec.message());
+}
+
 void write_plot(const ExperimentOptions& o, const plot::Table& table, const std::string& stem,
                 const std::string& title, const std::string& x_column,
                 const std::vector<plot::Series>& series, const std::string& x_label,

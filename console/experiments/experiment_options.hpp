@@ -40,6 +40,10 @@ std::string scene_path(const ExperimentOptions& o, const std::string& name);
 // Creates out_dir if results are to be written; returns false when out_dir is empty.
 bool prepare_out_dir(const ExperimentOptions& o);
 
+// Creates <out>/<folder> (a figure family's folder) when results are written; throws
+// stride::Error naming it when it cannot be made.
+void make_figure_dir(const ExperimentOptions& o, const std::string& folder);
+
 // Writes <out>/<stem>.csv and, if plots are on, <out>/<stem>.png with y columns against x_column.
 void write_plot(const ExperimentOptions& o, const plot::Table& table, const std::string& stem,
                 const std::string& title, const std::string& x_column,

@@ -3,6 +3,7 @@
 #include <ostream>
 #include <string>
 
+#include "console/experiments/figure_index.hpp"
 #include "console/experiments/kalman_study.hpp"
 #include "console/experiments/parameter_overrides.hpp"
 #include "console/experiments/walk_recording.hpp"
@@ -24,6 +25,9 @@ std::string diag(const Eigen::Vector4d& v) {
   }
   return s + "]";
 }
+
+// Figs. 4.1 and 4.2 go into one family folder of the output.
+const std::string kKalmanFigures = "figures/kalman_pitch_estimates";
 
 std::vector<Eigen::Vector2d> angles(const std::vector<Eigen::Vector4d>& x) {
   std::vector<Eigen::Vector2d> a;
@@ -135,19 +139,25 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
       for (const auto& e : estimates) row.push_back(e[k][0]);
       fig.add_row(std::move(row));
     }
+    // The estimates first, the IMU and the ground truth last: the true curve is drawn on top.
     auto series_of = [&](std::size_t from, std::size_t to) {
-      std::vector<plot::Series> s{{"true_pitch", "ground truth", ""},
-                                  {"imu_pitch", "IMU angle", ""}};
+      std::vector<plot::Series> s;
       for (std::size_t i = from; i < to; ++i)
         s.push_back({"pitch_" + std::to_string(i + 1),
                      "Q " + diag(settings[i].q) + " R " + diag(settings[i].r), ""});
+      s.push_back({"imu_pitch", "IMU angle", ""});
+      s.push_back({"true_pitch", "ground truth", ""});
       return s;
     };
-    write_plot(o, fig, "kalman_fig4.1_q", "Torso pitch estimates, R fixed (Fig. 4.1)", "t",
+    make_figure_dir(o, kKalmanFigures);
+    write_plot(o, fig, kKalmanFigures + "/fig4.1_q",
+               "Torso pitch estimates, R fixed (Fig. 4.1), ground truth on top", "t",
                series_of(0, 4), "t [s]", "pitch [rad]");
-    write_plot(o, fig, "kalman_fig4.2_r", "Torso pitch estimates, Q fixed (Fig. 4.2)", "t",
+    write_plot(o, fig, kKalmanFigures + "/fig4.2_r",
+               "Torso pitch estimates, Q fixed (Fig. 4.2), ground truth on top", "t",
                series_of(4, 8), "t [s]", "pitch [rad]");
     plot::write_csv(o.out_dir + "/kalman_walk_trace.csv", trace_table(rec));
+    if (o.plots) print_figure_index(o.out_dir, "kalman", out);
   }
   return 0;
 }
