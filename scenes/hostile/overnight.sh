@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs overnight.sweep.xml (1000 posture walks + 250 broken runs) with the traces of two runs
-# (hip_slow and hip_medium, seed 1) blocked by directories, then checks what the README promises:
-# the sweep ends by itself (exit 1: some runs failed), every good walk has its row, every broken
-# run is a failed row with its reason, and the blocked traces fail their two runs and nothing else.
+# (hip_slow and hip_medium, seed 1) blocked by directories, then checks what
+# docs/sweeps-and-tuning.md promises: the sweep ends by itself (exit 1: some runs failed), every
+# good walk has its row, every broken run is a failed row with its reason, and the blocked traces
+# fail their two runs and nothing else.
 #   scenes/hostile/overnight.sh <build dir> [jobs=2] [out=overnight-sweep] [seeds=125]
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
