@@ -12,6 +12,7 @@
 #include "console/view/scene_message.hpp"
 #include "console/view/type_desc_json.hpp"
 #include "console/view/view_bridge.hpp"
+#include "console/view/walk_plan_overlay.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
@@ -112,16 +113,36 @@ const model::RobotModel* ViewBridge::kinematic_model() {
 
 void ViewBridge::observe_keys() {
   std::vector<std::string> keys = watch_keys_;
+  try {
+    const std::vector<std::string> reps = interpreter_.target().representations();
+    walk_plan_ = std::find(reps.begin(), reps.end(), "WalkPlan") != reps.end();
+  } catch (const Error&) {
+    walk_plan_ = false;  // no scene, or a robot that cannot say
+  }
   if (kinematic()) keys.insert(keys.end(), {kJointsKey, kAnglesKey, kModulesKey, kTimesKey});
+  if (kinematic() && walk_plan_) keys.push_back(kWalkPlanKey);  // streamed with the frame
   interpreter_.set_observed_extra(std::move(keys));
+}
+
+void ViewBridge::add_walk_plan(RobotFrame& f, const model::RobotModel& model) {
+  if (!walk_plan_) return;
+  try {
+    if (auto plan = read_walk_plan(value(kWalkPlanKey))) place_walk_plan(f, model, *plan);
+  } catch (const Error&) {
+    // not on the blackboard (any more): nothing planned to draw
+  }
 }
 
 Json ViewBridge::robots_json() {
   Json robots = Json::array();
   sim::Simulation* s = local_simulation(interpreter_);
   if (!kinematic()) {
-    for (int i = 0; s && i < s->robot_count(); ++i)
-      robots.push_back(robot_frame_json(simulated_robot_frame(*s, i)));
+    for (int i = 0; s && i < s->robot_count(); ++i) {
+      RobotFrame f = simulated_robot_frame(*s, i);
+      if (s->robot(i).name() == interpreter_.local().selected_robot())
+        add_walk_plan(f, s->robot(i).model());  // the console's values are this robot's
+      robots.push_back(robot_frame_json(f));
+    }
     return robots;
   }
   const model::RobotModel* m = kinematic_model();
@@ -132,6 +153,7 @@ Json ViewBridge::robots_json() {
     RobotFrame f = kinematic_robot_frame(*m, s ? s->robot(0).name() : interpreter_.target().name(),
                                          named_numbers(value(kJointsKey)), angles[0], angles[1]);
     f.fell = std::abs(angles[0]) > kFallTilt || std::abs(angles[1]) > kFallTilt;
+    add_walk_plan(f, *m);
     robots.push_back(robot_frame_json(f));
   } catch (const Error&) {
     // a robot without those representations is drawn without its body

@@ -48,7 +48,11 @@ Json robot_frame_json(const RobotFrame& f) {
     for (const auto& v : point_json(force)) c.push_back(v);
     contacts.push_back(std::move(c));
   }
-  for (const auto& s : f.footsteps) steps.push_back(point_json(s));
+  for (const auto& s : f.footsteps) {
+    Json step = point_json(s.pose);
+    step.push_back(s.left ? "left" : "right");
+    steps.push_back(std::move(step));
+  }
   return {{"name", f.name},
           {"links", std::move(links)},
           {"com", f.com ? point_json(*f.com) : Json(nullptr)},
@@ -57,6 +61,7 @@ Json robot_frame_json(const RobotFrame& f) {
           {"support", std::move(support)},
           {"contacts", std::move(contacts)},
           {"footsteps", std::move(steps)},
+          {"walk_frame", f.walk_frame ? point_json(*f.walk_frame) : Json(nullptr)},
           {"fell", f.fell}};
 }
 

@@ -22,7 +22,12 @@ struct RobotFrame {
   std::optional<Eigen::Vector2d> zmp_ref, cop;
   std::vector<Eigen::Vector2d> support;                               // convex, counter-clockwise
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> contacts;  // point, force on the robot
-  std::vector<Eigen::Vector3d> footsteps;                             // x, y, yaw
+  struct Footstep {
+    Eigen::Vector3d pose;  // x, y, yaw
+    bool left = false;
+  };
+  std::vector<Footstep> footsteps;            // planned, world frame (walk_plan_overlay.hpp)
+  std::optional<Eigen::Vector3d> walk_frame;  // the plan's walk frame in the world: x, y, yaw
   bool fell = false;
 };
 

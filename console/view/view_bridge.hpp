@@ -25,6 +25,8 @@ class Interpreter;
 
 namespace stride::view {
 
+struct RobotFrame;
+
 class ViewBridge {
  public:
   // `out` is the stream the interpreter prints to (a page's command's output is taken from it);
@@ -68,6 +70,7 @@ class ViewBridge {
   bool kinematic();
   const model::RobotModel* kinematic_model();
   void observe_keys();  // what a remote robot streams for the bridge
+  void add_walk_plan(RobotFrame& f, const model::RobotModel& model);  // ZMP ref, footsteps
   double time();
   std::uint64_t step_count();
   int steps_per_frame();
@@ -93,6 +96,7 @@ class ViewBridge {
   std::unique_ptr<model::RobotModel> shipped_model_;  // a remote robot's (the shipped NAO)
   std::size_t log_frames_ = 0;
   std::optional<std::size_t> log_frame_;
+  bool walk_plan_ = false;  // the target has a WalkPlan (observe_keys)
 };
 
 }  // namespace stride::view

@@ -53,6 +53,8 @@ def test(stride, d):
             wait_js(d, "strideView.tree?.representations?.length > 0", 20, "the robot's tree")
             edges, total = check_edges_of(d, "PatternWalk")  # the robot's declarations, over the wire
             print(f"remote graph: {total} edges, PatternWalk's: {edges}")
+            wait_js(d, "strideView.frame.robots[0].walk_frame && strideView.frame.robots[0].footsteps.length >= 2"
+                       " && strideView.frame.robots[0].zmp_ref", 20, "the robot's WalkPlan streamed (ZMP ref, footsteps)")
             d.find_element(By.ID, "tab-data").click()
             tree_button(d, KEY, "tree-plot")
             samples = wait_js(d, f"strideView.store.t.length >= 50 && strideView.store.cols.get('{KEY}')", 30,

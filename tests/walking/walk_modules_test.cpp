@@ -9,6 +9,7 @@
 #include "behaviours/stand/stand.hpp"
 #include "behaviours/walking/modules/pattern_walk.hpp"
 #include "behaviours/walking/modules/walk_parameters.hpp"
+#include "behaviours/walking/modules/walk_plan.hpp"
 #include "robot/core/error.hpp"
 #include "robot/runtime/runtime.hpp"
 
@@ -93,6 +94,10 @@ void expect_plays_pattern(const std::string& walker, const std::string& preset) 
     } else if (t >= 0 && t <= pattern.duration() && compared++ % 37 == 0) {
       expect_bitwise(rig.request(), walking_request(leg_joints(pattern.sample(t))),
                      "t=" + std::to_string(t));
+      const WalkPlan& plan = rig.rt.representation<WalkPlan>();  // from the very sample played
+      EXPECT_EQ(plan.zmp[0], pattern.sample(t).zmp.x()) << "t=" << t;
+      EXPECT_EQ(plan.zmp[1], pattern.sample(t).zmp.y()) << "t=" << t;
+      EXPECT_EQ(plan.steps, walking::walk_plan(pattern.sample(t), pattern.footsteps(), t).steps);
     } else if (t > pattern.duration()) {
       expect_bitwise(rig.request(), walking_request(leg_joints(pattern.sample(pattern.duration()))),
                      "after the walk");

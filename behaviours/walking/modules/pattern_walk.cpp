@@ -7,6 +7,7 @@
 
 #include "behaviours/stand/stand.hpp"
 #include "behaviours/walking/modules/walk_parameters.hpp"
+#include "behaviours/walking/modules/walk_plan.hpp"
 #include "robot/representations/frame_info.hpp"
 #include "robot/representations/fsr_sensor_data.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
@@ -56,6 +57,7 @@ class PatternPlayer final : public Module {
         fsr_(c.require<FsrSensorData>()),
         params_(c.parameters<WalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
+        plan_(c.provide<WalkPlan>()),
         zmp_debug_(c.debug_request("walking:zmp")) {}
 
   void update() override {
@@ -71,6 +73,7 @@ class PatternPlayer final : public Module {
     const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
     const walking::PatternSample sample = pattern_->sample(t_clamped);
     request_ = walking_request(walking::leg_joints(sample));
+    plan_ = walking::walk_plan(sample, pattern_->footsteps(), t_clamped);
     if (request_.ik_beyond_limits != 0) ++beyond_limit_frames_;
     request_.ik_beyond_limit_frames = beyond_limit_frames_;
     show_zmp(sample);
@@ -97,6 +100,7 @@ class PatternPlayer final : public Module {
   const FsrSensorData& fsr_;
   const WalkParameters& params_;
   WalkingJointRequest& request_;
+  WalkPlan& plan_;
   DebugRequest zmp_debug_;
   std::optional<Pattern> pattern_;
   WalkParameters built_from_;

@@ -3,8 +3,9 @@
 // WalkingJointRequest:
 //   PatternWalk       stretched-knee pattern (StretchedKneePattern)
 //   ConventionalWalk  constant-height bent-knee pattern (ConventionalPattern)
-// Both require FrameInfo and JointSensorData and take WalkParameters. From the first frame they
-// blend the measured pose into the pattern's first pose (interpolation_time), stand until
+// Both require FrameInfo and JointSensorData, take WalkParameters, and also provide the WalkPlan
+// (walk_plan.hpp: ZMP reference and next footsteps) from the sample they play. From the first frame
+// they blend the measured pose into the pattern's first pose (interpolation_time), stand until
 // start_delay, play the pattern at FrameInfo time, then hold its last pose.
 #include <array>
 

@@ -5,6 +5,9 @@ const THREE = window.THREE;
 const LIFT = 0.003; // above the ground so the overlays are not hidden in it
 const NEWTON_TO_M = 0.004; // arrow length per newton
 const FOOT = [0.16, 0.08]; // a NAO sole, for the footsteps' outlines
+const SIDE = { left: 0x5c8feb, right: 0xed854d }; // the robot's side colours (scene_builder.js)
+const TRAIL = 150; // ZMP reference points kept (1.5 s of 10 ms frames at most)
+const TRAIL_JUMP = 0.3; // m: a reference moving further in one frame starts a new trail (reset, mv)
 
 function disc(colour, r) {
   const m = new THREE.Mesh(new THREE.CircleBufferGeometry(r, 24),
@@ -41,7 +44,16 @@ export class Overlays {
     this.cop = disc(0x20a040, 0.011);
     this.root.add(this.com, this.comGround, this.comLine, this.zmp, this.cop);
     this.supportMat = lineMaterial(0x1060c0);
-    this.stepMat = lineMaterial(0x7a3db8);
+    this.stepMat = { left: lineMaterial(SIDE.left), right: lineMaterial(SIDE.right) };
+    this.trail = []; // recent ZMP reference points, oldest first
+    this.trailLine = new THREE.Line(new THREE.BufferGeometry(), lineMaterial(0xd02020));
+    this.trailLine.renderOrder = 10;
+    this.root.add(this.trailLine);
+    this.soleGeometry = new THREE.PlaneBufferGeometry(FOOT[0], FOOT[1]); // shared by the soles
+    this.soleMat = {};
+    for (const side of ["left", "right"])
+      this.soleMat[side] = new THREE.MeshBasicMaterial({ color: SIDE[side], transparent: true, opacity: 0.35, depthTest: false });
+    this.steps = []; // the footsteps drawn now: [x, y, yaw, side], for tests and tooltips
     this.last = null;
   }
 
@@ -61,8 +73,24 @@ export class Overlays {
         new THREE.Vector3(r.com[0], r.com[1], LIFT)]);
     }
     this.place(this.zmp, r.zmp_ref && this.on.zmp, r.zmp_ref && [r.zmp_ref[0], r.zmp_ref[1], LIFT * 2]);
+    this.updateTrail(r.zmp_ref, frame.seq);
     this.place(this.cop, r.cop && this.on.cop, r.cop && [r.cop[0], r.cop[1], LIFT * 3]);
     this.rebuildDynamic(r);
+  }
+
+  // The ZMP reference's recent path, one point per frame message (a repeated frame adds none).
+  updateTrail(zmp, seq) {
+    if (!zmp) this.trail = [];
+    else if (seq !== this.trailSeq) {
+      const last = this.trail[this.trail.length - 1];
+      if (last && Math.hypot(zmp[0] - last[0], zmp[1] - last[1]) > TRAIL_JUMP) this.trail = [];
+      this.trail.push([zmp[0], zmp[1]]);
+      if (this.trail.length > TRAIL) this.trail.shift();
+    }
+    this.trailSeq = seq;
+    this.trailLine.visible = this.on.zmp && this.trail.length > 1;
+    if (this.trailLine.visible)
+      this.trailLine.geometry.setFromPoints(this.trail.map((p) => new THREE.Vector3(p[0], p[1], LIFT * 2)));
   }
 
   place(obj, visible, p) {
@@ -86,14 +114,21 @@ export class Overlays {
         a.traverse((o) => { o.renderOrder = 12; if (o.material) o.material.depthTest = false; });
         this.dynamic.add(a);
       }
-    if (this.on.footsteps)
-      for (const s of r.footsteps || []) {
-        const [x, y, yaw] = s, c = Math.cos(yaw), sn = Math.sin(yaw);
-        const corners = [[1, 1], [-1, 1], [-1, -1], [1, -1]].map(([u, v]) => {
-          const dx = (u * FOOT[0]) / 2, dy = (v * FOOT[1]) / 2;
-          return [x + c * dx - sn * dy, y + sn * dx + c * dy];
-        });
-        this.dynamic.add(loop(corners, this.stepMat));
-      }
+    this.steps = this.on.footsteps ? r.footsteps || [] : [];
+    for (const s of this.steps) {
+      const [x, y, yaw, side] = s, c = Math.cos(yaw), sn = Math.sin(yaw);
+      const corners = [[1, 1], [-1, 1], [-1, -1], [1, -1]].map(([u, v]) => {
+        const dx = (u * FOOT[0]) / 2, dy = (v * FOOT[1]) / 2;
+        return [x + c * dx - sn * dy, y + sn * dx + c * dy];
+      });
+      const key = side === "right" ? "right" : "left";
+      const outline = loop(corners, this.stepMat[key]);
+      outline.userData = { footstep: s };
+      const sole = new THREE.Mesh(this.soleGeometry, this.soleMat[key]);
+      sole.position.set(x, y, LIFT);
+      sole.rotation.z = yaw;
+      sole.renderOrder = 9;
+      this.dynamic.add(sole, outline);
+    }
   }
 }
