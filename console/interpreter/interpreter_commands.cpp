@@ -190,6 +190,10 @@ void Interpreter::log(const std::vector<std::string>& a) {
     if (r.stopped) out_ << " (stopped before damaged frame " << r.stopped_at << ")";
     out_ << "\n";
     for (const auto& m : r.mismatches) out_ << "  " << m << "\n";
+    if (r.first_frame != 0 && r.mismatch_count > 0)
+      out_ << "note: the log starts at controller frame " << r.first_frame
+           << ", not at the controller's start: the modules' state before it is not in the log, so "
+              "the replay cannot match it (stride robot --log records from the first frame)\n";
   }
 }
 

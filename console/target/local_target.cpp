@@ -8,6 +8,7 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/framework/value.hpp"
 #include "robot/runtime/controller_keys.hpp"
 #include "robot/runtime/recorded_config.hpp"
 #include "robot/runtime/replay.hpp"
@@ -296,6 +297,12 @@ ReplaySummary LocalTarget::log_replay() {
   for (std::size_t i = 0; i < r.mismatches.size() && i < 5; ++i)
     s.mismatches.push_back("frame " + std::to_string(r.mismatches[i].frame) + ": " +
                            r.mismatches[i].representation);
+  // A log begun mid-run starts with module state the replay cannot know.
+  if (const int fi = log_->index_of("FrameInfo"); fi >= 0 && s.frames > 0 && log_->readable(0)) {
+    const Value v = log_->value(0, "FrameInfo");
+    const auto [d, frame] = value_at(*log_->types()[fi].desc, v, "frame", "FrameInfo");
+    if (const auto* n = std::get_if<std::int64_t>(&frame->data)) s.first_frame = *n;
+  }
   replay_ = s;
   return s;
 }

@@ -15,6 +15,7 @@ struct ReplaySummary {
   std::size_t mismatch_count = 0;
   std::size_t stopped_at = 0;  // first damaged frame, where the replay stopped (0: none)
   bool stopped = false;
+  std::int64_t first_frame = 0;  // the controller frame the log starts at (0: its start)
 };
 
 class SimulationTarget {

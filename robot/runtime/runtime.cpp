@@ -211,7 +211,8 @@ void Runtime::say(std::string line) {
 bool Runtime::step() {
   std::vector<std::string> said;
   const bool read = link_.read(*sensor_);
-  events_->link_lost(!read, said);
+  const auto now = std::chrono::steady_clock::now().time_since_epoch();
+  events_->link_lost(!read, std::chrono::duration<double>(now).count(), said);
   for (auto& line : said) say(std::move(line));
   if (!read) return false;
   frame_info_->time = sensor_->time;

@@ -42,14 +42,14 @@ void RuntimeEvents::after_frame(double time, double tilt, double fall_tilt,
   last_ = safety;
 }
 
-void RuntimeEvents::link_lost(bool lost, std::vector<std::string>& lines) {
-  // One late packet is a stall the link rides out; several reads in a row without a frame are
-  // a lost link.
-  failed_reads_ = lost ? failed_reads_ + 1 : 0;
-  if (failed_reads_ == kLostAfter) {
+void RuntimeEvents::link_lost(bool lost, double now, std::vector<std::string>& lines) {
+  // A late packet is a stall the link rides out; no frame for kLostAfter seconds is a lost link.
+  if (!lost) lost_since_ = -1;
+  if (lost && lost_since_ < 0) lost_since_ = now;
+  if (lost && !link_lost_ && now - lost_since_ >= kLostAfter) {
     link_lost_ = true;
-    lines.push_back("event: hardware link lost: no sensor frame in " + std::to_string(kLostAfter) +
-                    " reads (holding the last command)");
+    lines.push_back("event: hardware link lost: no sensor frame for " +
+                    fixed(now - lost_since_, 2) + " s (holding the last command)");
   } else if (!lost && link_lost_) {
     link_lost_ = false;
     lines.push_back("event: hardware link back");

@@ -17,7 +17,8 @@ class RuntimeEvents {
   // `fall_tilt` the SensorConversion threshold.
   void after_frame(double time, double tilt, double fall_tilt, const CommandSafety& safety,
                    std::vector<std::string>& lines);
-  void link_lost(bool lost, std::vector<std::string>& lines);
+  // After every read of the link; `now` is a steady clock in seconds.
+  void link_lost(bool lost, double now, std::vector<std::string>& lines);
   static std::string fault_line(const std::string& module, const std::string& what);
   static std::string swapped_override_line(const std::string& representation,
                                            const std::string& from, const std::string& to);
@@ -25,10 +26,10 @@ class RuntimeEvents {
  private:
   bool fallen_ = false;
   double upright_since_ = -1;  // s, since a fallen robot stands upright again (-1: it does not)
-  static constexpr int kLostAfter = 5;  // reads without a frame before the link counts as lost
+  static constexpr double kLostAfter = 0.1;  // s without a frame before the link counts as lost
   bool link_lost_ = false;
-  int failed_reads_ = 0;
-  CommandSafety last_;          // the counters at the end of the previous frame
+  double lost_since_ = -1;  // s, the first of a run of failed reads (-1: the last one succeeded)
+  CommandSafety last_;      // the counters at the end of the previous frame
   double last_clamp_ = -1e300;  // s, the last frame with a clamped position
   double last_nonfinite_ = -1e300;
 };
