@@ -195,10 +195,8 @@ void Runtime::replan(const std::map<std::string, std::string>& chosen) {
 
 void Runtime::say_events() {
   const double tilt = inertial_ ? inertial_->angles.cwiseAbs().maxCoeff() : -1;
-  std::vector<std::string> said;
   events_->after_frame(frame_info_->time, tilt, fall_params_ ? fall_params_->fall_tilt : 0.8,
-                       *safety_, said);
-  for (auto& line : said) say(std::move(line));
+                       *safety_);
 }
 
 void Runtime::say(std::string line) {
@@ -209,11 +207,9 @@ void Runtime::say(std::string line) {
 }
 
 bool Runtime::step() {
-  std::vector<std::string> said;
   const bool read = link_.read(*sensor_);
   const auto now = std::chrono::steady_clock::now().time_since_epoch();
-  events_->link_lost(!read, std::chrono::duration<double>(now).count(), said);
-  for (auto& line : said) say(std::move(line));
+  events_->link_lost(!read, std::chrono::duration<double>(now).count());
   if (!read) return false;
   frame_info_->time = sensor_->time;
   frame_info_->frame = frame_counter_++;
@@ -439,6 +435,7 @@ void Runtime::set_debug_request(const std::string& name, DebugSwitch state) {
 std::vector<std::string> Runtime::take_debug_lines() {
   std::vector<std::string> lines = std::move(debug_.lines);
   debug_.lines.clear();
+  events_->take(lines);  // the frames' events, written now: a step never allocates for them
   if (debug_.dropped_lines > 0)
     lines.push_back("(" + std::to_string(debug_.dropped_lines) + " debug lines dropped)");
   debug_.dropped_lines = 0;
