@@ -49,19 +49,24 @@ std::optional<fs::path> inside(const fs::path& root, std::string_view rel) {
 
 WebRoots default_web_roots() {
   const fs::path data = data_dir();
-  // Installed: share/stride/web with web/vendor/{three,uplot}; else the source tree and Debian's.
-  return {first_existing(data / "web", data / "console" / "view" / "web"),
-          first_existing(data / "web" / "vendor" / "three", "/usr/share/javascript/three"),
-          first_existing(data / "web" / "vendor" / "uplot",
-                         data / ".deps" / "web" / "node_modules" / "uplot" / "dist")};
+  // Installed: share/stride/web with web/vendor/{three,uplot,noble-hashes}; else the source tree,
+  // Debian's and the npm registry's in .deps/web.
+  const fs::path npm = data / ".deps" / "web" / "node_modules";
+  return {
+      first_existing(data / "web", data / "console" / "view" / "web"),
+      first_existing(data / "web" / "vendor" / "three", "/usr/share/javascript/three"),
+      first_existing(data / "web" / "vendor" / "uplot", npm / "uplot" / "dist"),
+      first_existing(data / "web" / "vendor" / "noble-hashes", npm / "@noble" / "hashes" / "esm")};
 }
 
 std::optional<fs::path> resolve_web_path(const WebRoots& roots, std::string_view target) {
   if (target.empty() || target[0] != '/') return std::nullopt;
   target = target.substr(0, target.find_first_of("?#"));
   if (target == "/") target = "/index.html";
-  const std::array<std::pair<std::string_view, const fs::path*>, 2> vendors{
-      {{"/vendor/three/", &roots.three}, {"/vendor/uplot/", &roots.uplot}}};
+  const std::array<std::pair<std::string_view, const fs::path*>, 3> vendors{
+      {{"/vendor/three/", &roots.three},
+       {"/vendor/uplot/", &roots.uplot},
+       {"/vendor/noble-hashes/", &roots.noble}}};
   for (const auto& [prefix, root] : vendors)
     if (target.starts_with(prefix)) return inside(*root, target.substr(prefix.size()));
   if (target.starts_with("/vendor/")) return std::nullopt;

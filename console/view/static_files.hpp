@@ -1,5 +1,5 @@
 #pragma once
-// The files the view serves over HTTP: the page and the two vendor libraries, by URL path, with
+// The files the view serves over HTTP: the page and the three vendor libraries, by URL path, with
 // their MIME types. Only files below the roots are ever resolved (no "..", no symlink escapes).
 #include <filesystem>
 #include <optional>
@@ -12,6 +12,7 @@ struct WebRoots {
   std::filesystem::path page;   // console/view/web, or an installed share/stride/web
   std::filesystem::path three;  // Debian's libjs-three
   std::filesystem::path uplot;  // uPlot's dist/ from the npm registry
+  std::filesystem::path noble;  // @noble/hashes' esm/ from the npm registry (the page's HMAC)
 };
 
 // The roots of this build or installation (robot/core/data_dir.hpp finds the data directory).

@@ -39,6 +39,12 @@ TEST_F(ViewHttp, ServesThePageAndVendorFiles) {
   EXPECT_EQ(uplot.body,
             test_support::read_text(std::string(STRIDE_SOURCE_DIR) +
                                     "/.deps/web/node_modules/uplot/dist/uPlot.min.css"));
+  const HttpReply hmac = http_get(view_->port(), "/vendor/noble-hashes/hmac.js");
+  EXPECT_EQ(hmac.status, 200);
+  EXPECT_EQ(hmac.content_type, "text/javascript; charset=utf-8");
+  EXPECT_EQ(hmac.body,
+            test_support::read_text(std::string(STRIDE_SOURCE_DIR) +
+                                    "/.deps/web/node_modules/@noble/hashes/esm/hmac.js"));
 }
 
 TEST_F(ViewHttp, RefusesTraversalAndUnknownPaths) {
