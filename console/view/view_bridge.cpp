@@ -74,7 +74,10 @@ void ViewBridge::poll() {
         break;
     }
   }
-  send_frame_if_due(false);
+  // A paused remote robot's clock goes on: after the frame that shows the pause, the pages get
+  // none until `run` follows it again (a command's reply still brings one).
+  const bool paused_remote = mode_ == "remote" && !interpreter_.running() && !last_running_;
+  if (!paused_remote) send_frame_if_due(false);
   const auto now = std::chrono::steady_clock::now();
   if (now - last_status_ > std::chrono::seconds(2) && server_.clients() > 0) {
     last_status_ = now;
