@@ -26,8 +26,9 @@ class PhysicsWorld {
   virtual const char* engine_name() const = 0;
 
   virtual void add_static_box(const StaticBox& box) = 0;
-  // Seeded tiles, each one static box.
-  void add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed);
+  // Seeded tiles, each one static box (an engine may hold them in a form it collides faster,
+  // with the same boxes).
+  virtual void add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed);
   // A robot with its root link at `root_pose` and joints at `q` (mimic applied); it stays owned
   // by the caller and must be destroyed before the world.
   virtual std::unique_ptr<RobotBody> add_robot(const model::RobotModel& model, int robot_index,

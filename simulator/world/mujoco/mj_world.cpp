@@ -9,6 +9,7 @@
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/world/mujoco/mj_contact_law.hpp"
 #include "simulator/world/mujoco/mj_robot_body.hpp"
+#include "simulator/world/mujoco/tile_blocks.hpp"
 
 namespace stride::sim {
 namespace {
@@ -47,6 +48,13 @@ void MjWorld::add_static_box(const StaticBox& box) {
   dirty_ = true;
 }
 
+void MjWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
+  const std::vector<StaticBox> tiles = uneven_tiles(patch, seed);
+  for (auto& block : group_tiles(tiles, kTileBlockEdge)) tile_blocks_.push_back(std::move(block));
+  static_geoms_ += static_cast<int>(tiles.size());
+  dirty_ = true;
+}
+
 std::unique_ptr<RobotBody> MjWorld::add_robot(const model::RobotModel& model, int robot_index,
                                               const Eigen::Isometry3d& root_pose,
                                               const model::JointVector& q) {
@@ -62,7 +70,7 @@ void MjWorld::fix_robot(int slot) {
 }
 
 void MjWorld::compile() {
-  mjModel* m = load_mjcf(write_mjcf(physics_, ground_, boxes_, robots_, geoms_));
+  mjModel* m = load_mjcf(write_mjcf(physics_, ground_, boxes_, tile_blocks_, robots_, geoms_));
   if (m->ngeom != static_cast<int>(geoms_.size())) {
     mj_deleteModel(m);
     throw Error("mujoco: the compiled scene's geoms do not match the written ones");

@@ -37,6 +37,8 @@ class MjWorld : public PhysicsWorld {
 
   const char* engine_name() const override { return "mujoco"; }
   void add_static_box(const StaticBox& box) override;
+  // The tiles in static bodies of nearby tiles (tile_blocks.hpp), not as world geoms.
+  void add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) override;
   std::unique_ptr<RobotBody> add_robot(const model::RobotModel& model, int robot_index,
                                        const Eigen::Isometry3d& root_pose,
                                        const model::JointVector& q) override;
@@ -61,6 +63,7 @@ class MjWorld : public PhysicsWorld {
 
   GroundSettings ground_;
   std::vector<StaticBox> boxes_;
+  std::vector<std::vector<StaticBox>> tile_blocks_;  // uneven floors' tiles, block by block
   std::vector<MjcfRobot> robots_;
   std::vector<model::JointVector> initial_q_;
   std::vector<MjRobotLayout> layouts_;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "simulator/world/contact_law.hpp"
+#include "simulator/world/mujoco/tile_blocks.hpp"
 
 namespace stride::sim {
 namespace {
@@ -96,6 +97,35 @@ void write_link(std::ostream& out, const MjcfRobot& r, int link, const Eigen::Is
   out << "</body>\n";
 }
 
+void write_static_box(std::ostream& out, const StaticBox& b, double robot_friction,
+                      std::vector<GeomInfo>& geoms) {
+  out << "<geom type=\"box\" size=\"" << vec(b.size / 2) << "\"" << pose_attrs(b.pose)
+      << friction_attr(b.friction) << " priority=\"" << static_priority(b.friction, robot_friction)
+      << "\"/>\n";
+  geoms.push_back({-1, -1, b.friction});
+}
+
+// Each block a static body at the origin (its geoms' poses are the tiles' own, bit for bit),
+// after the robots so their body and geom ids stay as without tiles. Blocks never touch each
+// other, so every pair of them is excluded before its geom pairs would be looked at; this closes
+// <worldbody>.
+void write_tile_blocks(std::ostream& out, const std::vector<std::vector<StaticBox>>& blocks,
+                       double robot_friction, std::vector<GeomInfo>& geoms) {
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    out << "<body name=\"" << mjcf_tile_block_name(k) << "\">\n";
+    for (const StaticBox& b : blocks[k]) write_static_box(out, b, robot_friction, geoms);
+    out << "</body>\n";
+  }
+  out << "</worldbody>\n";
+  if (blocks.size() < 2) return;
+  out << "<contact>\n";
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    for (std::size_t j = i + 1; j < blocks.size(); ++j)
+      out << "<exclude body1=\"" << mjcf_tile_block_name(i) << "\" body2=\""
+          << mjcf_tile_block_name(j) << "\"/>\n";
+  out << "</contact>\n";
+}
+
 }  // namespace
 
 std::string mjcf_link_name(int r, int l) {
@@ -107,8 +137,9 @@ std::string mjcf_joint_name(int r, int j) {
 }
 
 std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
-                       const std::vector<StaticBox>& boxes, const std::vector<MjcfRobot>& robots,
-                       std::vector<GeomInfo>& geoms) {
+                       const std::vector<StaticBox>& boxes,
+                       const std::vector<std::vector<StaticBox>>& tile_blocks,
+                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms) {
   geoms.clear();
   const double robot_friction = robot_geom_friction(physics);
   std::ostringstream out;
@@ -136,17 +167,13 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
         << static_priority(ground.friction, robot_friction) << "\"/>\n";
     geoms.push_back({-1, -1, ground.friction});
   }
-  for (const StaticBox& b : boxes) {
-    out << "<geom type=\"box\" size=\"" << vec(b.size / 2) << "\"" << pose_attrs(b.pose)
-        << friction_attr(b.friction) << " priority=\""
-        << static_priority(b.friction, robot_friction) << "\"/>\n";
-    geoms.push_back({-1, -1, b.friction});
-  }
+  for (const StaticBox& b : boxes) write_static_box(out, b, robot_friction, geoms);
   for (MjcfRobot r : robots) {
     r.friction = robot_friction;
     write_link(out, r, r.model->root_link, r.root_pose, geoms);
   }
-  out << "</worldbody>\n</mujoco>\n";
+  write_tile_blocks(out, tile_blocks, robot_friction, geoms);
+  out << "</mujoco>\n";
   return out.str();
 }
 

@@ -25,10 +25,12 @@ struct MjcfRobot {
   double friction = kRobotGeomFriction;  // its geoms' (write_mjcf sets the scene's)
 };
 
-// The MJCF document, and in `geoms` the GeomInfo of every geom in MuJoCo's geom order.
+// The MJCF document, and in `geoms` the GeomInfo of every geom in MuJoCo's geom order. Each
+// of `tile_blocks` becomes one static body holding its boxes (tile_blocks.hpp).
 std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
-                       const std::vector<StaticBox>& boxes, const std::vector<MjcfRobot>& robots,
-                       std::vector<GeomInfo>& geoms);
+                       const std::vector<StaticBox>& boxes,
+                       const std::vector<std::vector<StaticBox>>& tile_blocks,
+                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms);
 
 // MJCF names of robot `r`'s link `l` and joint `j` bodies/joints.
 std::string mjcf_link_name(int r, int l);
