@@ -46,7 +46,7 @@ constexpr std::string_view kRealtime =
     "  with realtime on; scripts, -c, pipes and stride run --seconds run as fast as\n"
     "  possible unless they say realtime on. A simulation served with stride run --debug is\n"
     "  paced to the wall clock, one on LoLA with --realtime (12 ms frames).\n"
-    "  example:  realtime on; run; watch robot.torso.pitch every 500\n";
+    "  example:  realtime on; run; watch robot.torso.pitch every 50\n";
 
 constexpr std::string_view kRemote =
     "  Any robot runtime serves the console over TCP with --debug: stride-robot on a NAO\n"
