@@ -62,7 +62,7 @@ class SensorConversion final : public Module {
     inertial_.gyro = Eigen::Vector3d(sensor_.gyroscope.data());
     inertial_.angles = Eigen::Vector2d(sensor_.angles.data());
     fsr_ = fsr_sensor_data(sensor_, params_.contact_force);
-    const double tilt = inertial_.angles.cwiseAbs().maxCoeff();
+    const double tilt = imu_tilt(inertial_);
     if (stop_on_fall_.on() && tilt > params_.fall_tilt)
       stop_on_fall_.stop("fell: IMU tilt " + std::to_string(tilt) + " rad (roll " +
                          std::to_string(inertial_.angles.x()) + ", pitch " +

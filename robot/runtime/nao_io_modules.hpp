@@ -28,6 +28,10 @@ struct SensorConversionParameters {
 // zero when the total force is not positive.
 Eigen::Vector2d foot_cop(const double* forces, const Eigen::Vector2d* positions);
 FsrSensorData fsr_sensor_data(const hal::SensorFrame& s, double contact_force);
+// The IMU's largest |roll| or |pitch|: past SensorConversionParameters::fall_tilt it is a fall.
+inline double imu_tilt(const InertialSensorData& imu) {
+  return imu.angles.cwiseAbs().maxCoeff();
+}
 
 void register_nao_io_modules(ModuleRegistry& registry);
 

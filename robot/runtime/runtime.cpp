@@ -194,9 +194,10 @@ void Runtime::replan(const std::map<std::string, std::string>& chosen) {
 }
 
 void Runtime::say_events() {
-  const double tilt = inertial_ ? inertial_->angles.cwiseAbs().maxCoeff() : -1;
-  events_->after_frame(frame_info_->time, tilt, fall_params_ ? fall_params_->fall_tilt : 0.8,
-                       *safety_);
+  const double tilt = inertial_ ? imu_tilt(*inertial_) : -1;
+  const double fall_tilt =
+      fall_params_ ? fall_params_->fall_tilt : SensorConversionParameters{}.fall_tilt;
+  events_->after_frame(frame_info_->time, tilt, fall_tilt, *safety_);
 }
 
 void Runtime::say(std::string line) {
