@@ -117,7 +117,9 @@ void Interpreter::serve(const std::vector<std::string>& a) {
 void Interpreter::idle() {
   for (auto it = remotes_.begin(); it != remotes_.end();) {
     try {
-      it->second->keep_alive();
+      // Said at once, above the prompt: a person waiting there must not miss a fall.
+      const std::string who = it->second.get() == remote_ ? "" : "[" + it->first + "] ";
+      for (const auto& line : it->second->idle_lines()) out_ << who << line << "\n";
       ++it;
     } catch (const debug::ConnectionLost& e) {
       out_ << "error: " << e.what() << "\n";

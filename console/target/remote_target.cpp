@@ -176,9 +176,32 @@ void RemoteTarget::set_debug_request(const std::string& name, DebugSwitch state)
   call(request(Op::Dr, name, std::string(debug_switch_name(state))));
 }
 
+void RemoteTarget::hold_lines(const debug::Sample& s) {
+  for (const auto& line : s.lines) held_.emplace_back(s.time, line);
+}
+
+void RemoteTarget::stream_idle() {
+  Request r = request(Op::Subscribe);
+  r.keys = {"representation:FrameInfo.frame"};
+  client_->send_only(std::move(r));
+  idle_stream_ = true;
+}
+
+std::vector<std::string> RemoteTarget::idle_lines() {
+  if (!idle_stream_) stream_idle();
+  client_->keep_alive();
+  std::vector<std::string> out = client_->take_notes();
+  while (auto s = client_->next_sample(0)) hold_lines(*s);
+  for (auto& [t, line] : held_) out.push_back("t=" + number_text(t) + " " + line);
+  held_.clear();
+  return out;
+}
+
 DebugOutput RemoteTarget::take_debug_output() {
   DebugOutput d;
   d.lines = client_->take_notes();  // what the robot said unasked, e.g. that a log stopped
+  for (auto& held : held_) d.lines.push_back(std::move(held.second));
+  held_.clear();
   if (!current_) return d;
   d.lines.insert(d.lines.end(), current_->lines.begin(), current_->lines.end());
   d.stop = std::move(current_->stop);
@@ -259,7 +282,9 @@ std::int64_t RemoteTarget::subscribe() {
   r.keys = framework;
   r.keys.insert(r.keys.end(), debug.begin(), debug.end());
   const auto reply = call(r);
-  client_->drop_samples();  // anything earlier belongs to an older subscription
+  // Anything earlier belongs to an older subscription; only its lines are still to be said.
+  while (auto s = client_->next_sample(0)) hold_lines(*s);
+  idle_stream_ = false;
   subscribed_ = framework;
   subscribed_descs_.clear();
   for (const auto& bytes : reply->fields().byte_list("descs")) {
@@ -275,12 +300,12 @@ std::int64_t RemoteTarget::subscribe() {
 std::uint64_t RemoteTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
   if (steps == 0) return 0;
   const std::int64_t first = subscribe();
-  struct EndStream {  // the stream stops however the run ends
+  struct EndStream {  // however the run ends, the light stream follows, so no event is missed
     RemoteTarget& t;
     ~EndStream() {
       t.current_.reset();
       try {
-        t.client_->send_only(request(Op::Unsubscribe));
+        t.stream_idle();
       } catch (const Error&) {
       }
     }

@@ -55,8 +55,9 @@ class RemoteTarget final : public RobotTarget {
 
   // The robot's scenario from its start (Op::Restart); throws if its server does not restart.
   void restart();
-  // Pings and reads what arrived while the console waits for input.
-  void keep_alive() { client_->keep_alive(); }
+  // Pings and returns what the robot said while the console waits at its prompt (a fall, a
+  // lost link, a module fault, debug output): a stream of FrameInfo.frame alone carries them.
+  std::vector<std::string> idle_lines();
 
  private:
   struct Listing {
@@ -73,6 +74,8 @@ class RemoteTarget final : public RobotTarget {
   Root& fetch(const std::string& key);           // root of the key, fresh from the robot
   std::string streamed(const std::string& key);  // from the current sample
   std::int64_t subscribe();                      // returns the first frame streamed
+  void stream_idle();                            // the light stream idle_lines() reads
+  void hold_lines(const debug::Sample& s);       // a sample's lines, for the next reader
   std::string text_of(const TypeDesc& d, const std::string& bytes, const std::string& key);
 
   debug::Endpoint endpoint_;
@@ -84,6 +87,8 @@ class RemoteTarget final : public RobotTarget {
   std::vector<TypeDescPtr> subscribed_descs_;
   std::optional<debug::Sample> current_;  // while advancing
   double last_time_ = 0;
+  bool idle_stream_ = false;                          // the light stream is asked for
+  std::vector<std::pair<double, std::string>> held_;  // lines read between runs, with their t
   std::uint64_t dropped_ = 0;
 };
 
