@@ -1,6 +1,8 @@
 #include "robot/app/robot_main.hpp"
 
+#include <algorithm>
 #include <ostream>
+#include <vector>
 
 #include "robot/app/flags.hpp"
 #include "robot/app/robot_process.hpp"
@@ -12,14 +14,42 @@
 #include "robot/debug/server.hpp"
 
 namespace stride {
+namespace {
+
+// A console connecting a moment late must not miss the walk: the robot stands, its LoLA frames
+// answered with no command, and the controller starts with the first console. False: the link
+// was lost for good.
+bool wait_for_console(RobotProcess& robot, debug::DebugServer& server, StopSignals& stop,
+                      std::ostream& err) {
+  err << "stride robot: standing, controller paused until the first console connects "
+         "(--no-wait starts at once)"
+      << std::endl;
+  const bool held = robot.hold_until(
+      [&](Runtime& rt) {
+        server.idle(rt);
+        return server.stats().clients > 0;
+      },
+      [&] { return stop.requested(); });
+  if (held) err << "stride robot: a console connected: controller running" << std::endl;
+  return held || stop.requested();
+}
+
+}  // namespace
 
 int robot_main(std::span<const std::string> args, const ModuleRegistry& registry, std::ostream& out,
                std::ostream& err) {
   StopSignals stop;  // from here on SIGINT/SIGTERM end the run between frames
   std::unique_ptr<RobotProcess> robot;
   std::unique_ptr<debug::DebugServer> server;
+  bool no_wait = false;
   try {
-    const Flags f = read_flags(args,
+    // --no-wait (no value): with --debug, the controller starts at once instead of holding the
+    // robot as it stands until the first console connects.
+    std::vector<std::string> words(args.begin(), args.end());
+    const auto no_wait_at = std::find(words.begin(), words.end(), "--no-wait");
+    no_wait = no_wait_at != words.end();
+    if (no_wait) words.erase(no_wait_at);
+    const Flags f = read_flags(words,
                                {"--config", "--lola", "--log", "--debug", "--token-file",
                                 "--log-dir", "--rt-priority", "--cpu"},
                                "stride robot");
@@ -50,6 +80,8 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
       server->allow_restart();  // `restart` rebuilds the controller from its configuration
       robot->set_frame_boundary(&server->boundary());
       err << "stride robot: debug server on " << server->endpoint().text() << std::endl;
+    } else if (no_wait) {
+      throw Error("stride robot: --no-wait goes with --debug <addr:port>");
     }
     // Last, as nothing started here should share the loop's CPU or level.
     if (cpu >= 0) set_cpu_affinity({cpu}, "stride robot: --cpu");
@@ -60,8 +92,14 @@ int robot_main(std::span<const std::string> args, const ModuleRegistry& registry
   }
   int code = kRobotModuleFailed;
   try {
-    code = robot->run([&] { return stop.requested(); },
-                      [&] { return server && server->take_restart(); });
+    const bool waited = !server || no_wait || wait_for_console(*robot, *server, stop, err);
+    if (!waited)
+      code = kRobotLinkLost;
+    else if (stop.requested())
+      code = kRobotStopped;
+    else
+      code = robot->run([&] { return stop.requested(); },
+                        [&] { return server && server->take_restart(); });
   } catch (
       const std::exception& e) {  // whatever escaped the loop: one line and the summary, no abort
     err << "stride robot: the control loop stopped: " << one_line(e.what(), 200) << std::endl;

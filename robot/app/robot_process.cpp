@@ -103,6 +103,38 @@ bool RobotProcess::link_down(double& lost_for) {
   return true;
 }
 
+void RobotProcess::say_link_back() {
+  if (!lost_) return;
+  events_ << "stride robot: frame " << frames_ << ": LoLA link back after "
+          << ms(seconds_since(lost_at_)) << std::endl;
+  lost_ = false;
+}
+
+bool RobotProcess::hold_until(const std::function<bool(Runtime&)>& ready,
+                              const std::function<bool()>& stop_requested) {
+  hal::SensorFrame sensors;
+  const auto period =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(config_.period));
+  auto due = Clock::now();
+  while (!stop_requested() && !ready(*runtime_)) {
+    if (link_->read(sensors)) {
+      link_->write_nothing();
+      say_link_back();
+      // A NAO's LoLA paces itself; a lockstep simulator would otherwise race through its run.
+      due = std::max(due + period, Clock::now() - period);
+      std::this_thread::sleep_until(due);
+      continue;
+    }
+    double lost_for = 0;
+    if (!link_down(lost_for)) {
+      events_ << "stride robot: no LoLA link for " << ms(lost_for) << ": exiting" << std::endl;
+      return false;
+    }
+  }
+  first_packet_ = link_->stats().packets;
+  return !stop_requested();
+}
+
 void RobotProcess::restart_controller() {
   runtime_->set_frame_boundary(nullptr);  // a client's log of the old controller ends, said
   runtime_ = std::make_unique<Runtime>(registry_, runtime_config_, *link_);
@@ -123,18 +155,16 @@ int RobotProcess::run(const std::function<bool()>& stop_requested,
     if (restart_requested && restart_requested()) {
       restart_controller();
       schedule = ControllerSchedule(config_.controller.changes);
+      first_packet_ = link_->stats().packets;
     }
-    // Changes due at the coming frame's time (LoLA's clock: one period per packet).
-    schedule.apply_due(*runtime_,
-                       hal::lola::lola_frame_time(link_->stats().packets, config_.period));
+    // Changes due at the coming frame's time (LoLA's clock: one period per packet), counted from
+    // the controller's start, so a wait for a console or a restart does not make them all due.
+    schedule.apply_due(*runtime_, hal::lola::lola_frame_time(link_->stats().packets - first_packet_,
+                                                             config_.period));
     if (runtime_->step()) {
       ++frames_;
       if (runtime_->logging()) log_frames_ = runtime_->logged_frames();
-      if (lost_) {
-        events_ << "stride robot: frame " << frames_ << ": LoLA link back after "
-                << ms(seconds_since(lost_at_)) << std::endl;
-        lost_ = false;
-      }
+      say_link_back();
       report_frame_events();
       if (config_.stop_on_module_error && !runtime_->module_faults().empty())
         return kRobotModuleFailed;

@@ -19,10 +19,11 @@ namespace stride {
 
 // Exit codes of `stride robot`.
 enum RobotExit : int {
-  kRobotStopped = 0,       // stopped on request (SIGINT/SIGTERM)
-  kRobotBadInput = 1,      // configuration or command-line error: nothing ran
-  kRobotLinkLost = 2,      // no LoLA link for longer than the timeout
-  kRobotModuleFailed = 3,  // a module threw and the config says on_module_error="stop", or the loop failed
+  kRobotStopped = 0,   // stopped on request (SIGINT/SIGTERM)
+  kRobotBadInput = 1,  // configuration or command-line error: nothing ran
+  kRobotLinkLost = 2,  // no LoLA link for longer than the timeout
+  kRobotModuleFailed =
+      3,  // a module threw and the config says on_module_error="stop", or the loop failed
 };
 
 class RobotProcess {
@@ -42,6 +43,11 @@ class RobotProcess {
   // `restart_requested` (may be empty), when true, rebuilds the controller from its configuration.
   int run(const std::function<bool()>& stop_requested,
           const std::function<bool()>& restart_requested = {});
+  // Before run(): answers every LoLA packet with an empty map (LoLA keeps every command as it
+  // was: the robot stands as it stood) until `ready(runtime)` says go; the controller does not
+  // step. False when stopped, or the link stayed lost past its timeout (run() then says why).
+  bool hold_until(const std::function<bool(Runtime&)>& ready,
+                  const std::function<bool()>& stop_requested);
   // What happened, for the end of a run: frames, link, safety and module counts.
   std::string summary() const;
 
@@ -50,6 +56,7 @@ class RobotProcess {
 
  private:
   bool link_down(double& lost_for);  // false: give up (timeout)
+  void say_link_back();              // once, when a lost link answers again
   void report_frame_events();
   void restart_controller();  // the configured controller, fresh, on the same link
 
@@ -62,6 +69,7 @@ class RobotProcess {
   std::unique_ptr<Runtime> runtime_;
   std::size_t faults_reported_ = 0;
   std::int64_t frames_ = 0;
+  std::int64_t first_packet_ = 0;  // LoLA packets before the controller's frame 0 (held ones)
   bool lost_ = false;
   std::chrono::steady_clock::time_point lost_at_;
   std::chrono::steady_clock::time_point last_error_line_{};
