@@ -32,11 +32,6 @@ void finish_contact_law(SceneDescription& s, const ReplacedAttribute& replaced,
                    "<physics>: attribute '" + replaced.attr +
                        "': replaced by the <contact> law at " + at +
                        " (expected the contact stated once, there)");
-  const bool ode = s.physics.engine == PhysicsSettings::Engine::Ode;
-  if (!ode && law.cone == ContactLaw::Cone::Pyramid && s.physics.noslip_iterations == 0)
-    throw error_at(law.file, law.line,
-                   "<contact>: MuJoCo realises the pyramid's hard friction in its no-slip pass; "
-                   "expected noslip_iterations > 0 in <physics>");
   if (unstated.ground) s.ground.friction = law.friction;
   for (std::size_t i : unstated.boxes) s.boxes[i].friction = law.friction;
   for (std::size_t i : unstated.uneven) s.uneven[i].friction = law.friction;

@@ -18,9 +18,9 @@ void parse_contact_law(const XmlElement& e, PhysicsSettings& p);
 
 // The <physics> attributes a law replaces; "file:line: attribute" of the first stated, if any.
 inline constexpr const char* kReplacedByLaw[] = {
-    "contact_erp",        "contact_cfm", "contact_stiffness", "contact_damping",
-    "contact_spring_per", "cone",        "contact_timeconst", "contact_dampratio",
-    "contact_dmin",       "contact_dmax"};
+    "contact_erp",        "contact_cfm",  "contact_stiffness", "contact_damping",
+    "contact_spring_per", "cone",         "contact_timeconst", "contact_dampratio",
+    "contact_dmin",       "contact_dmax", "noslip_iterations"};
 
 // The first of them <physics> stated (attr empty: none).
 struct ReplacedAttribute {
@@ -28,9 +28,8 @@ struct ReplacedAttribute {
   int line = 0;
 };
 
-// After the whole scene is read: a law beside a replaced <physics> attribute, or on MuJoCo's
-// pyramid without its no-slip pass, is an error at file:line; the surfaces that stated no
-// friction take the law's.
+// After the whole scene is read: a law beside a replaced <physics> attribute is an error at
+// file:line; the surfaces that stated no friction take the law's.
 struct UnstatedFriction {
   bool ground = false;
   std::vector<std::size_t> boxes, uneven;

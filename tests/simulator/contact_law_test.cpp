@@ -72,10 +72,6 @@ double forward_speed(const sim::Simulation& s) {
 
 // Pushed along x for 0.1 s, then left to slide: v falls at mu g until it stops.
 TEST_P(ContactLaw, SlidingBlockDeceleratesAtMuG) {
-  if (engine() == "mujoco")  // docs/scenes.md, "Contact law": not realised there yet
-    GTEST_SKIP() << "MuJoCo 2.2.2 does not realise the law's friction yet: a sliding block hops "
-                    "(decelerates at 0.93 / 1.12 mu g on the elliptic cone / pyramid) and a block "
-                    "on a ramp at 1.05 atan mu creeps 8-10 mm/s";
   const double mu = 0.5;
   auto sim =
       scene("<scene>" + physics() + R"(<contact stiffness="1e5" damping="1000" friction="0.5"/>
@@ -121,10 +117,6 @@ RampRun on_ramp(const std::string& engine, const std::string& cone, double mu) {
 }
 
 TEST_P(ContactLaw, RampHoldsBelowAtanMuAndSlidesAbove) {
-  if (engine() == "mujoco")  // docs/scenes.md, "Contact law": not realised there yet
-    GTEST_SKIP() << "MuJoCo 2.2.2 does not realise the law's friction yet: a sliding block hops "
-                    "(decelerates at 0.93 / 1.12 mu g on the elliptic cone / pyramid) and a block "
-                    "on a ramp at 1.05 atan mu creeps 8-10 mm/s";
   const double slope = 10 * std::numbers::pi / 180, tan_slope = std::tan(slope);
   const RampRun holds = on_ramp(engine(), cone(), 1.05 * tan_slope);
   RecordProperty("creep_at_1.05_tan_m", std::to_string(holds.distance));
@@ -232,10 +224,10 @@ TEST(ContactLawScene, ConflictsAndBadValuesAreOneLineAtTheirPlace) {
   EXPECT_NE(load_error("<scene><contact per=\"foot\"/></scene>").find("attribute 'per'"),
             std::string::npos);
 #ifdef STRIDE_HAVE_MUJOCO
-  EXPECT_EQ(load_error("<scene><physics engine=\"mujoco\" noslip_iterations=\"0\"/>\n"
+  EXPECT_EQ(load_error("<scene><physics engine=\"mujoco\" noslip_iterations=\"10\"/>\n"
                        "<contact cone=\"pyramid\"/></scene>"),
-            "law.xml:2: <contact>: MuJoCo realises the pyramid's hard friction in its no-slip "
-            "pass; expected noslip_iterations > 0 in <physics>");
+            "law.xml:1: <physics>: attribute 'noslip_iterations': replaced by the <contact> law "
+            "at law.xml:2 (expected the contact stated once, there)");
 #endif
 }
 

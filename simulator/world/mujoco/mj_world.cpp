@@ -8,6 +8,7 @@
 #include "robot/core/error.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/world/mujoco/mj_contact_law.hpp"
+#include "simulator/world/mujoco/mj_law_friction.hpp"
 #include "simulator/world/mujoco/mj_robot_body.hpp"
 #include "simulator/world/mujoco/tile_blocks.hpp"
 
@@ -142,10 +143,11 @@ void MjWorld::step1_with_law() {
   mj_crb(model_, data_);
   mj_factorM(model_, data_);
   mj_collision(model_, data_);
-  orient_law_contacts(model_, data_, law);
+  orient_law_contacts(model_, data_);
   mj_makeConstraint(model_, data_);
   mj_transmission(model_, data_);
-  impose_law_rows(model_, data_, law, physics_.cfm, points_per_body_);
+  impose_law_rows(model_, data_, law, points_per_body_);
+  insert_law_friction_rows(model_, data_, law, physics_.cfm / model_->opt.timestep, friction_rows_);
   mj_projectConstraint(model_, data_);
   mj_sensorPos(model_, data_);
   mj_energyPos(model_, data_);
@@ -154,15 +156,30 @@ void MjWorld::step1_with_law() {
   mj_energyVel(model_, data_);
 }
 
+// mj_step2 as MuJoCo 2.2.2 runs it (Euler), solving twice as ODE's exact solver does: without the
+// friction, then with each friction row bounded by mu times the normal force found.
+void MjWorld::step2_with_law() {
+  mj_fwdActuation(model_, data_);
+  mj_fwdAcceleration(model_, data_);
+  mj_fwdConstraint(model_, data_);
+  if (bound_law_friction(data_, friction_rows_)) mj_fwdConstraint(model_, data_);
+  mj_sensorAcc(model_, data_);
+  mj_checkAcc(model_, data_);
+  mj_Euler(model_, data_);
+}
+
 void MjWorld::step() {
   if (dirty_) compile();
   const double before = data_->time;
-  if (physics_.contact_law)
+  if (physics_.contact_law) {
     step1_with_law();
-  else
+    retarget_motor_rows();
+    step2_with_law();
+  } else {
     mj_step1(model_, data_);
-  retarget_motor_rows();
-  mj_step2(model_, data_);
+    retarget_motor_rows();
+    mj_step2(model_, data_);
+  }
   if (!(data_->time > before)) data_->warning[mjWARN_BADQACC].number += 1;  // it reset itself
   for (int w : {mjWARN_BADQACC, mjWARN_BADQVEL, mjWARN_BADQPOS})
     if (data_->warning[w].number > 0) {
@@ -196,8 +213,11 @@ void MjWorld::record_contacts() {
   for (int i = 0; i < data_->ncon && contacts_.size() < scene_limits::kMaxContacts; ++i) {
     const mjContact& c = data_->contact[i];
     if (c.efc_address < 0) continue;  // excluded or beyond the margin: no force
-    mjtNum local[6];
-    mj_contactForce(model_, data_, i, local);
+    mjtNum local[6] = {0, 0, 0, 0, 0, 0};
+    if (physics_.contact_law)
+      law_contact_force(data_, friction_rows_, i, local);
+    else
+      mj_contactForce(model_, data_, i, local);
     // Contact frame rows: normal (from geom1 to geom2), then two tangents; the force acts on
     // geom2 and its opposite on geom1.
     Eigen::Vector3d f = Eigen::Vector3d::Zero();

@@ -9,6 +9,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "simulator/world/mujoco/mj_law_friction.hpp"
 #include "simulator/world/mujoco/mjcf_writer.hpp"
 #include "simulator/world/physics_world.hpp"
 
@@ -60,6 +61,7 @@ class MjWorld : public PhysicsWorld {
   void record_contacts();
   void retarget_motor_rows();
   void step1_with_law();
+  void step2_with_law();
 
   GroundSettings ground_;
   std::vector<StaticBox> boxes_;
@@ -70,6 +72,7 @@ class MjWorld : public PhysicsWorld {
   std::vector<GeomInfo> geoms_;       // by mjModel geom id
   std::vector<MjMotor> motors_;       // by dof
   std::vector<int> points_per_body_;  // the contact law's split, by mjModel body id
+  LawFrictionRows friction_rows_;     // the contact law's friction rows this step
   int static_geoms_ = 0;
   bool dirty_ = true;
   mjModel* model_ = nullptr;

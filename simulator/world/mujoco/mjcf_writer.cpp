@@ -155,9 +155,9 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
       << "<option timestep=\"" << num(physics.step) << "\" gravity=\"" << vec(physics.gravity)
       << "\" integrator=\"Euler\" jacobian=\"dense\" cone=\""
       << (elliptic ? "elliptic" : "pyramidal") << "\" noslip_iterations=\""
-      << physics.noslip_iterations << "\" solver=\"" << solver << "\" iterations=\""
-      << (converged ? 100 : physics.iterations) << "\" tolerance=\"" << (converged ? "1e-10" : "0")
-      << "\"/>\n"
+      << (physics.contact_law ? 0 : physics.noslip_iterations) << "\" solver=\"" << solver
+      << "\" iterations=\"" << (converged ? 100 : physics.iterations) << "\" tolerance=\""
+      << (converged ? "1e-10" : "0") << "\"/>\n"
       << "<default><geom solref=\"" << num(physics.contact_timeconst) << " "
       << num(physics.contact_dampratio) << "\" solimp=\"" << num(physics.contact_dmin) << " "
       << num(physics.contact_dmax) << " 0.001\"/></default>\n"
