@@ -8,26 +8,8 @@ set -u
 stride=$1 src=$2
 . "$src/tests/walkthrough/tmux_lib.sh"
 
-# The number the console prints after an echoed marker for `get <key>`.
-value_of() {
-  type_line t "echo $1"
-  type_line t "get $2"
-  wait_for "^$1\$"
-  for _ in $(seq 1 50); do
-    v=$(number_after "$1" '^-?[0-9.e+-]+$' t)
-    [ -n "$v" ] && { echo "$v"; return; }
-    sleep 0.2
-  done
-  fail "no value after $1"
-}
-
-lola_sock="$home/sim.sock"
-open sim "'$stride' run scenes/experiments/hip_medium.xml --seconds 120 --realtime --lola '$lola_sock'"
-for _ in $(seq 1 300); do [ -S "$lola_sock" ] && break; sleep 0.2; done
-[ -S "$lola_sock" ] || fail "the simulator's LoLA socket never appeared" sim
-open robot "'$stride' robot --config '$src/scenes/robots/nao/config/hip_walk.xml' --lola '$lola_sock' --debug 127.0.0.1:0 2>&1"
+lola_pair "$home/sim.sock" "--seconds 120 --realtime"
 wait_for '^stride robot: standing, controller paused until the first console connects' 60 robot
-port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
 sleep 4  # a console a few seconds late
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30
@@ -40,18 +22,12 @@ awk -v a="$f1" -v b="$f2" 'BEGIN {exit !(b > a + 100)}' || fail "the controller 
 pitch=$(value_of third 'representation:InertialSensorData.angles[1]')
 awk -v p="$pitch" 'BEGIN {exit !(p > -0.5 && p < 0.5)}' || fail "the robot is not upright (pitch $pitch)"
 type_line t quit
-wait_for '^stride robot: a console connected' 5 robot
 
 # Lockstep: 20 s of simulation would be over in about 2 s of racing; holding, it is not.
 tm kill-window -t robot
 tm kill-window -t sim
-lola_sock="$home/lockstep.sock"
-open sim "'$stride' run scenes/experiments/hip_medium.xml --seconds 20 --lola '$lola_sock'"
-for _ in $(seq 1 300); do [ -S "$lola_sock" ] && break; sleep 0.2; done
-[ -S "$lola_sock" ] || fail "the lockstep simulator's LoLA socket never appeared" sim
-open robot "'$stride' robot --config '$src/scenes/robots/nao/config/hip_walk.xml' --lola '$lola_sock' --debug 127.0.0.1:0 2>&1"
+lola_pair "$home/lockstep.sock" "--seconds 20"
 wait_for '^stride robot: standing, controller paused' 60 robot
-port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
 sleep 5
 screen sim | grep -q '^scene hip_medium .* hash ' && fail "the lockstep simulation ended while the robot waited" sim
 open t2 "'$stride' --connect 127.0.0.1:$port"

@@ -7,19 +7,6 @@ set -u
 stride=$1 src=$2
 . "$src/tests/walkthrough/tmux_lib.sh"
 
-# FrameInfo.time as the console prints it after an echoed marker.
-frame_time() {
-  type_line t "echo $1"
-  type_line t 'get representation:FrameInfo.time'
-  wait_for "^$1\$"
-  for _ in $(seq 1 50); do
-    v=$(number_after "$1" '^[0-9.e+-]+$' t)
-    [ -n "$v" ] && { echo "$v"; return; }
-    sleep 0.2
-  done
-  fail "no time after $1"
-}
-
 open sim "'$stride' run scenes/walking/open_loop_medium.xml --seconds 120 --debug 127.0.0.1:0"
 wait_for '^paused at t=0 until the first console connects$' 60 sim
 port=$(screen sim | sed -n 's/^debug server on 127\.0\.0\.1:\([0-9]*\) .*/\1/p' | head -n 1)
@@ -27,16 +14,16 @@ sleep 3  # a console a few seconds late
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30
 wait_for '^a console connected: running$' 30 sim
-t1=$(frame_time first)
+t1=$(value_of first representation:FrameInfo.time)
 awk -v t="$t1" 'BEGIN {exit !(t >= 0 && t < 2.5)}' || fail "the walk ran before the console came (t=$t1)"
 sleep 3
-t2=$(frame_time second)
+t2=$(value_of second representation:FrameInfo.time)
 awk -v a="$t1" -v b="$t2" 'BEGIN {exit !(b > a + 1)}' || fail "the run did not go on ($t1, $t2)"
 type_line t restart
 wait_for '^restarted ' 30
 wait_for '^restarted the scene \(a console asked\)$' 30 sim
 type_line t pause
-t3=$(frame_time third)
+t3=$(value_of third representation:FrameInfo.time)
 awk -v b="$t2" -v c="$t3" 'BEGIN {exit !(c < b)}' || fail "restart did not go back to the start ($t2, $t3)"
 type_line t quit
 echo "ok: waited for the console (t=$t1), ran on (t=$t2), restarted (t=$t3)"

@@ -38,3 +38,27 @@ number_after() {
   screen "$3" | awk -v m="$1" -v re="$2" '$0 == m {f = 1; v = ""; next} f && v == "" && $0 ~ re {
     if (match($0, /-?[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?/)) v = substr($0, RSTART, RLENGTH)} END {print v}'
 }
+# value_of <marker> <key> [window]: the number the console prints for `get <key>` after `echo
+# <marker>`.
+value_of() {
+  local w=${3:-t} v
+  type_line "$w" "echo $1"
+  type_line "$w" "get $2"
+  wait_for "^$1\$" 60 "$w"
+  for _ in $(seq 1 50); do
+    v=$(number_after "$1" '^-?[0-9.e+-]+$' "$w")
+    [ -n "$v" ] && { echo "$v"; return; }
+    sleep 0.2
+  done
+  fail "no value after $1" "$w"
+}
+# lola_pair <socket> <simulator flags> [robot flags]: the simulated NAO on LoLA (window sim) and
+# `stride robot --debug` driving it (window robot); sets $port to its debug server's.
+lola_pair() {
+  open sim "'$stride' run scenes/experiments/hip_medium.xml $2 --lola '$1'"
+  for _ in $(seq 1 300); do [ -S "$1" ] && break; sleep 0.2; done
+  [ -S "$1" ] || fail "the simulator's LoLA socket never appeared" sim
+  open robot "'$stride' robot --config '$src/scenes/robots/nao/config/hip_walk.xml' --lola '$1' --debug 127.0.0.1:0 ${3:-} 2>&1"
+  wait_for 'debug server on 127\.0\.0\.1:[0-9]+' 60 robot
+  port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
+}

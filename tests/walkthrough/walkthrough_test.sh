@@ -46,14 +46,8 @@ gp_size=$(stat -c %s "$home/walk.gp")
 type_line t quit
 
 # --- Part 2: the remote session over LoLA ---------------------------------------------------
-lola_sock="$home/sim.sock"
 mkdir -p "$home/robot_logs"
-open sim "'$stride' run scenes/experiments/hip_medium.xml --seconds 300 --realtime --lola '$lola_sock'"
-for _ in $(seq 1 300); do [ -S "$lola_sock" ] && break; sleep 0.2; done
-[ -S "$lola_sock" ] || fail "the simulator's LoLA socket never appeared" sim
-open robot "'$stride' robot --config '$src/scenes/robots/nao/config/hip_walk.xml' --lola '$lola_sock' --debug 127.0.0.1:0 --log-dir '$home/robot_logs' 2>&1"
-wait_for 'debug server on 127\.0\.0\.1:[0-9]+' 60 robot
-port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
+lola_pair "$home/sim.sock" "--seconds 300 --realtime" "--log-dir '$home/robot_logs'"
 open console "'$stride' --connect 127.0.0.1:$port"
 wait_for "^connected to .*127\.0\.0\.1:$port" 30 console
 wait_for '^stride> ?$' 30 console
