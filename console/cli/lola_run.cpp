@@ -16,6 +16,10 @@ int lola_robot(const sim::SceneDescription& scene, const LolaRunOptions& o) {
   throw Error("stride run: --robot: no robot named '" + o.robot + "' in the scene");
 }
 
+void serve_over(sim::Simulation& sim, int robot, sim::LolaServer& server) {
+  sim.set_controller(robot, [s = &server](sim::SimulatedRobot& r) { s->exchange(r); });
+}
+
 }  // namespace
 
 LolaRunOptions read_lola_options(ArgumentReader& a) {
@@ -62,9 +66,25 @@ std::unique_ptr<sim::LolaServer> attach_lola(console::SimSession& session, const
   events << "lola: robot '" << sim.robot(robot).name() << "' waits for a client on " << o.socket
          << std::endl;
   server->wait_for_client(o.wait);
-  sim::LolaServer* s = server.get();
-  sim.set_controller(robot, [s](sim::SimulatedRobot& r) { s->exchange(r); });
+  serve_over(sim, robot, *server);
   return server;
+}
+
+LolaRestarts::LolaRestarts(console::SimSession& session, sim::LolaServer& server,
+                           const LolaRunOptions& o)
+    : session_(session),
+      server_(server),
+      robot_(lola_robot(session.simulation().scene(), o)),
+      listener_(o.socket) {}
+
+bool LolaRestarts::poll() {
+  if (!listener_.take_request()) return false;
+  session_.reset();  // gives every robot the session's own controller: LoLA's link again
+  auto& sim = session_.simulation();
+  serve_over(sim, robot_, server_);
+  server_.restarted(sim.robot(robot_));
+  listener_.answer_done();
+  return true;
 }
 
 }  // namespace stride::cli

@@ -144,7 +144,13 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
           {.label = "run", .total = seconds, .unit = "s", .decimals = 1, .rate_as_speedup = true},
           console::progress_settings());
       console::HeadlessRun run{.seconds = seconds, .interrupt = &interrupt, .progress = &progress};
-      if (recorder.active()) run.after_step = [&] { recorder.after_step(renderer, sim); };
+      std::optional<LolaRestarts> restarts;
+      if (server) restarts.emplace(session, *server, lola);
+      if (recorder.active() || restarts)
+        run.after_step = [&] {
+          if (recorder.active()) recorder.after_step(renderer, sim);
+          if (restarts) restarts->poll();
+        };
       interrupted = console::run_headless(sim, run);
     }
     sim::RunTiming timing{.interrupted = interrupted, .requested_time = requested};

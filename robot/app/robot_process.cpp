@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "robot/core/error.hpp"
+#include "robot/hal/lola/simulator_restart.hpp"
 #include "robot/model/urdf_loader.hpp"
 #include "robot/runtime/controller_schedule.hpp"
 
@@ -135,8 +136,19 @@ bool RobotProcess::hold_until(const std::function<bool(Runtime&)>& ready,
   return !stop_requested();
 }
 
-void RobotProcess::restart_controller() {
+void RobotProcess::restart_controller(const std::function<bool()>& stop_requested) {
   runtime_->set_frame_boundary(nullptr);  // a client's log of the old controller ends, said
+  // A simulated NAO goes back to its scene's start too: held until the simulator says it did.
+  if (auto simulator = hal::lola::SimulatorRestart::ask(config_.lola_socket)) {
+    const auto until = Clock::now() + std::chrono::seconds(2);
+    bool done = false;
+    hold_until([&](Runtime&) { return (done = simulator->done()) || Clock::now() > until; },
+               stop_requested);
+    events_ << "stride robot: frame " << frames_
+            << (done ? ": the simulator put the robot back at its start"
+                     : ": the simulator did not put the robot back within 2 s")
+            << std::endl;
+  }
   runtime_ = std::make_unique<Runtime>(registry_, runtime_config_, *link_);
   runtime_->set_frame_boundary(boundary_);
   faults_reported_ = 0;
@@ -153,7 +165,7 @@ int RobotProcess::run(const std::function<bool()>& stop_requested,
   events_ << std::endl;
   while (!stop_requested()) {
     if (restart_requested && restart_requested()) {
-      restart_controller();
+      restart_controller(stop_requested);
       schedule = ControllerSchedule(config_.controller.changes);
       first_packet_ = link_->stats().packets;
     }

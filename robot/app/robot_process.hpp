@@ -58,7 +58,8 @@ class RobotProcess {
   bool link_down(double& lost_for);  // false: give up (timeout)
   void say_link_back();              // once, when a lost link answers again
   void report_frame_events();
-  void restart_controller();  // the configured controller, fresh, on the same link
+  // The configured controller, fresh, on the same link; a simulated NAO back at its start first.
+  void restart_controller(const std::function<bool()>& stop_requested);
 
   RobotConfig config_;
   const ModuleRegistry& registry_;

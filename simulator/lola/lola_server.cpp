@@ -46,6 +46,11 @@ void LolaServer::wait_for_client(double timeout) {
   event(0, "client connected");
 }
 
+void LolaServer::restarted(const SimulatedRobot& robot) {
+  commands_ = robot.latest_commands();
+  event(robot.latest_sensors().time, "scene back at its start (the client's controller restarted)");
+}
+
 void LolaServer::lose_client(double time, const std::string& why) {
   client_.reset();
   stream_.clear();

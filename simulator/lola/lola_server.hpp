@@ -50,6 +50,10 @@ class LolaServer {
   // One control frame of `robot` (called as its controller): its sensors out, its commands in.
   void exchange(SimulatedRobot& robot);
 
+  // The scene was put back at its start (its client's controller restarted): the commands an
+  // empty answer keeps are the restarted robot's own from now on.
+  void restarted(const SimulatedRobot& robot);
+
   const LolaServeReport& report() const { return report_; }
 
  private:
