@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "console/output/output_paths.hpp"
+#include "console/plot/figure_folder.hpp"
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 
@@ -31,10 +32,7 @@ bool prepare_out_dir(const ExperimentOptions& o) {
 
 void make_figure_dir(const ExperimentOptions& o, const std::string& folder) {
   if (o.out_dir.empty()) return;
-  const std::filesystem::path dir = std::filesystem::path(o.out_dir) / folder;
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw Error("cannot create directory '" + dir.string() + "': " + ec.message());
+  plot::make_directory((std::filesystem::path(o.out_dir) / folder).string());
 }
 
 void write_plot(const ExperimentOptions& o, const plot::Table& table, const std::string& stem,

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "console/experiments/study_output.hpp"
+#include "console/plot/figure_folder.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/plot/run_figures.hpp"
 
@@ -30,12 +31,12 @@ void write_landing_figure(const std::string& out_dir, bool png) {
   plot::write_long_csv(set, (std::filesystem::path(out_dir) / "fsr_touchdown_runs.csv").string());
   if (!png || plot::png_terminal().empty()) return;
   plot::Figure f;
-  f.stem = "fsr_touchdown";
+  f.stem = "landing_off_and_on";
   f.title = "FSR totals around touch-down, landing control off and on (seed 1)";
   f.x_label = "t [s]";
   f.panels = {{"left sole FSR total [N]", {"fsr_left"}, {}},
               {"right sole FSR total [N]", {"fsr_right"}, {}}};
-  plot::write_figure(set, f, out_dir);
+  plot::write_figure(set, f, plot::figure_dir(out_dir, "fsr_touchdown"));
 }
 
 }  // namespace stride::experiments

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 
+#include "console/plot/figure_folder.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/sweep/csv_line.hpp"
 #include "robot/core/error.hpp"
@@ -57,11 +58,7 @@ void panel(const std::string& csv, const std::string& png, const std::string& ti
 }
 
 std::string picture(const std::string& out_dir, const std::string& family, const std::string& c) {
-  const fs::path dir = fs::path(out_dir) / "figures" / family;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw Error("cannot create directory '" + dir.string() + "': " + ec.message());
-  return (dir / (c + ".png")).string();
+  return plot::figure_stem(out_dir, family, c) + ".png";
 }
 
 // (e): the measured CoP from the true feet midpoint, turned into the torso's heading, against the

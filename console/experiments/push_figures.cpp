@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "console/plot/figure_folder.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
@@ -79,7 +80,7 @@ void portrait(const std::string& out_dir, const std::string& control,
     }
     table.add_row(std::move(row));
   }
-  const std::string stem = (fs::path(out_dir) / ("phase_" + control)).string();
+  const std::string stem = plot::figure_stem(out_dir, "phase_portraits", control);
   plot::write_csv(stem + ".csv", table);
   if (!png) return;
   spec.csv_path = stem + ".csv";
@@ -203,7 +204,7 @@ void write_push_map(const std::string& out_dir, bool png) {
   write_file((fs::path(out_dir) / "push_map.csv").string(), csv.str());
   if (!png || plot::png_terminal().empty()) return;
   for (const std::string& d : directions) {
-    const std::string stem = (fs::path(out_dir) / ("push_map_" + d)).string();
+    const std::string stem = plot::figure_stem(out_dir, "push_map", d);
     plot::run_gnuplot(stem + ".gp", map_script(cells, d, stem + ".png", controls), stem + ".png");
   }
 }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 
+#include "console/plot/figure_folder.hpp"
 #include "console/plot/gnuplot_plot.hpp"
 #include "robot/core/error.hpp"
 
@@ -92,9 +93,9 @@ void write_plot(const SweepSpec& spec, const PlotSpec& p, const TallyTable& t,
     }
     table.add_row(std::move(row));
   }
-  std::string stem = t.name + "_" + file_word(p.x);
+  std::string stem = file_word(p.x);
   for (const std::string& y : p.y) stem += "_" + file_word(y);
-  const std::string base = (std::filesystem::path(output.dir()) / stem).string();
+  const std::string base = plot::figure_stem(output.dir(), t.name, stem);
   plot::write_csv(base + ".csv", table);
   if (!png) return;
   plot::PlotSpec ps{.csv_path = base + ".csv",

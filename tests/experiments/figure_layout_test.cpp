@@ -12,6 +12,8 @@
 #include "console/experiments/figure_index.hpp"
 #include "console/experiments/posture_figures.hpp"
 #include "console/plot/gnuplot_plot.hpp"
+#include "console/sweep/sweep_engine.hpp"
+#include "console/sweep/sweep_parser.hpp"
 
 namespace stride::experiments {
 namespace {
@@ -150,6 +152,36 @@ TEST(FigureLayout, KalmanStudyDrawsTheTruthLast) {
   EXPECT_NE(out.str().find("figures: " + (d / "out/index.html").string() + " (2 figures"),
             std::string::npos)
       << out.str();
+  fs::remove_all(d);
+}
+
+// A sweep's own <plot> (the knee-energy, gains and push experiments draw theirs so) goes into the
+// family folder of its tally, its CSV beside it, nothing into the output's top folder.
+TEST(FigureLayout, ASweepsPlotIsInItsTallysFolder) {
+  if (plot::png_terminal().empty()) GTEST_SKIP() << "gnuplot not installed";
+  const fs::path d = fresh_dir("sweep");
+  const sweep::Sweep s(
+      sweep::parse_sweep_text(R"(<sweep name="stand" scenes="../../scenes">
+  <scene file="nao_stand_controlled.xml"/>
+  <seeds from="1" to="2"/>
+  <run seconds="0.05"/>
+  <record><value name="z" key="frame.torso_z"/></record>
+  <tally name="by_seed" by="seed"><mean name="z" of="z"/></tally>
+  <plot tally="by_seed" x="seed" y="z" x_label="seed [-]" y_label="torso height [m]"/>
+</sweep>)",
+                              std::string(STRIDE_SOURCE_DIR) + "/tests/sweep/stand.sweep.xml"));
+  sweep::SweepOptions o;
+  o.out_dir = d.string();
+  o.print_tallies = false;
+  o.plots = true;
+  std::ostringstream text;
+  const auto result =
+      sweep::run_sweep(s, sweep::Tallies(s), *sweep::in_process_executor(), o, text);
+  ASSERT_TRUE(result.complete) << text.str();
+  EXPECT_TRUE(fs::exists(d / "figures/by_seed/seed_z.png")) << text.str();
+  EXPECT_EQ(read(d / "figures/by_seed/seed_z.csv").substr(0, 7), "seed,z\n");
+  for (const auto& e : fs::directory_iterator(d))
+    EXPECT_NE(e.path().extension(), ".png") << e.path() << ": a figure outside a family folder";
   fs::remove_all(d);
 }
 
