@@ -4,10 +4,12 @@
 // with a connected client that streams nothing.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <thread>
+#include <vector>
 
 #include "behaviours/stand/stand.hpp"
 #include "robot/debug/debug_client.hpp"
@@ -105,15 +107,16 @@ BENCHMARK(BM_GetRoundTrip)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // The frame boundary alone, timed by hand: the modules run outside the timed part, and the
 // frames are 1 ms apart so the server thread keeps up as it does at 12 ms.
-void boundary_cost(benchmark::State& state, bool stream) {
+void boundary_cost(benchmark::State& state, const std::vector<std::string>& keys) {
   Robot robot;
   debug::DebugServer server(loopback());
   debug::DebugClient client(server.endpoint(), "");
-  if (stream) {  // the subscription is answered from a frame's snapshot: frames run meanwhile
+  if (!keys.empty()) {  // the subscription is answered from a frame's snapshot: frames run
+                        // meanwhile
     std::atomic<bool> subscribed{false};
     std::thread subscribe([&] {
       debug::Request r = debug::request(debug::Op::Subscribe);
-      r.keys = fifty_fields();
+      r.keys = keys;
       client.call(r);
       subscribed = true;
     });
@@ -129,22 +132,27 @@ void boundary_cost(benchmark::State& state, bool stream) {
     while (!stop) client.next_sample(0.01);
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the wanted mask arrives
+  std::vector<double> us;
   for (auto _ : state) {
     robot.runtime.step();
     const auto t0 = std::chrono::steady_clock::now();
     server.boundary().after_frame(robot.runtime);
-    state.SetIterationTime(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    state.SetIterationTime(s);
+    us.push_back(s * 1e6);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   stop = true;
   reader.join();
+  std::sort(us.begin(), us.end());  // the tail is what a real-time loop feels
+  state.counters["p50_us"] = us[us.size() / 2];
+  state.counters["p99_us"] = us[us.size() * 99 / 100];
   state.counters["samples_sent"] = static_cast<double>(server.stats().samples_sent);
   state.counters["snapshots_lost"] = static_cast<double>(server.stats().snapshots_lost);
 }
 
 void BM_FrameBoundaryNoStream(benchmark::State& state) {
-  boundary_cost(state, false);
+  boundary_cost(state, {});
 }
 BENCHMARK(BM_FrameBoundaryNoStream)
     ->UseManualTime()
@@ -152,9 +160,29 @@ BENCHMARK(BM_FrameBoundaryNoStream)
     ->Iterations(2000);
 
 void BM_FrameBoundaryStreaming50Fields(benchmark::State& state) {
-  boundary_cost(state, true);
+  boundary_cost(state, fifty_fields());
 }
 BENCHMARK(BM_FrameBoundaryStreaming50Fields)
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(2000);
+
+// What `stride view --connect` streams to draw a robot: its joints, IMU angles and module times,
+// beside the page's plots (here 10 joint requests).
+std::vector<std::string> view_fields() {
+  std::vector<std::string> keys = {
+      "representation:JointSensorData.position", "representation:InertialSensorData.angles",
+      "representation:ModuleTimes.modules", "representation:ModuleTimes.ns",
+      "representation:FrameInfo.time"};
+  for (int i = 0; i < 10; ++i)
+    keys.push_back("representation:JointRequest.position[" + std::to_string(i) + "]");
+  return keys;
+}
+
+void BM_FrameBoundaryViewFields(benchmark::State& state) {
+  boundary_cost(state, view_fields());
+}
+BENCHMARK(BM_FrameBoundaryViewFields)
     ->UseManualTime()
     ->Unit(benchmark::kMicrosecond)
     ->Iterations(2000);

@@ -1,7 +1,7 @@
 // debug_load: the debug server under load against a 12 ms real-time robot loop.
 //   debug_load [--seconds S] [--block B] [--clients N] [--fields F] [--scene f]
 //              [--judge all|streams] [--rt-priority 1..99] [--cpu K] [--twin on|off]
-//              [--view on|off]
+//              [--view on|off]  (--serve-twin <scene>: the twin robot's own process)
 // The simulated NAO walks (Ch. 4 hip strategy, medium speed) with a 12 ms control period, paced
 // to the wall clock, its controller served by a debug server. Quiet blocks (no client) alternate
 // with loaded blocks (N clients each streaming F fields every frame while one more floods garbage
@@ -23,6 +23,7 @@
 // the live view instead: `stride view --connect` and a page watching 20 numbers (view_peer.py).
 // Each step's thread CPU time and the host's steal on the loop's CPU are printed too.
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -98,9 +99,6 @@ Options read_options(int argc, char** argv) {
   if (!(o.seconds > 0) || o.block < 0 || o.block > o.seconds)
     throw Error("debug_load: expected 0 < --block <= --seconds");
   if (o.block == 0) o.block = o.seconds;
-  // The twin steps its controller without physics, so its clock stands still: a view follows none.
-  if (o.view && o.twin)
-    throw Error("debug_load: --view on is judged against quiet blocks, not --twin");
   return o;
 }
 
@@ -297,48 +295,72 @@ struct Peers {
   fs::path dir;
 };
 
-// A twin robot in this process: the same controller with its own debug server, stepped every
-// 12 ms by a thread on the peers' CPUs for the whole run. A block whose peers load the twin's
-// server loads the machine as a loaded block does while this robot has no client: the same run
-// with no client, which tells the server's cost to the loop from the machine's.
+// A twin robot in its own process (`debug_load --serve-twin <scene>`): the same walking robot
+// with its own debug server, its physics paced to the wall clock on the peers' CPUs for the whole
+// run. A block whose peers load the twin's server loads the machine as a loaded block does while
+// this robot has no client: the same run with no client, which tells the server's cost to the loop
+// from the machine's. Its clock runs, so a view attached to it follows it as it would this robot.
+sim::SceneDescription scene_of(const std::string& file) {
+  sim::SceneDescription scene = sim::parse_scene_file(file);
+  scene.robots.at(0).period = kPeriod;
+  return scene;
+}
+
+// The twin's process: prints "twin at host:port", then runs until its parent is gone.
+int serve_twin(const std::string& scene_file) {
+  console::SimSession session(scene_of(scene_file));
+  debug::ServerOptions options;
+  options.listen = {"127.0.0.1", 0};
+  options.robot = "twin";
+  options.max_clients = 64;
+  options.log = [](const std::string&) {};
+  debug::DebugServer server(options);
+  session.runtime(0)->set_frame_boundary(&server.boundary());
+  std::cout << "twin at " << server.endpoint().text() << std::endl;
+  const pid_t parent = getppid();
+  sim::Simulation& sim = session.simulation();
+  const auto start = Clock::now();
+  const double t0 = sim.time();
+  while (getppid() == parent) {  // one control period of physics, then wait for the wall clock
+    const double until = sim.time() + kPeriod;
+    while (sim.time() < until - 1e-9) sim.step();
+    std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(sim.time() - t0)));
+  }
+  session.runtime(0)->set_frame_boundary(nullptr);
+  return 0;
+}
+
 class Twin {
  public:
-  // Made on the peers' CPUs before the loop's priority is set: its threads inherit those CPUs.
-  explicit Twin(const Options& o) : session_(scene_of(o)) {
-    debug::ServerOptions options;
-    options.listen = {"127.0.0.1", 0};
-    options.robot = "twin";
-    options.max_clients = static_cast<std::size_t>(o.clients) + 8;
-    options.log = [](const std::string&) {};
-    server_ = std::make_unique<debug::DebugServer>(options);
-    session_.runtime(0)->set_frame_boundary(&server_->boundary());
-    thread_ = std::thread([this] {
-      auto due = Clock::now();
-      while (!stop_) {
-        session_.runtime(0)->step();
-        due += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kPeriod));
-        std::this_thread::sleep_until(due);
-      }
-    });
+  Twin(const Options& o, const Peers& where)
+      : peer_(spawn_peer({"--serve-twin", o.scene}, (where.dir / "twin").string(), where.cpus,
+                         where.loop_cpu, fs::read_symlink("/proc/self/exe").string())) {
+    for (int i = 0; i < 200 && at_.empty(); ++i) {  // up to 10 s for it to listen
+      std::ifstream in(peer_.output);
+      std::string line;
+      if (std::getline(in, line) && line.starts_with("twin at ")) at_ = line.substr(8);
+      if (at_.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    if (at_.empty()) {
+      stop();
+      throw Error("debug_load: the twin robot did not start (see " + peer_.output + ")");
+    }
   }
-  ~Twin() {
-    stop_ = true;
-    thread_.join();
-    session_.runtime(0)->set_frame_boundary(nullptr);
-  }
-  std::string at() const { return server_->endpoint().text(); }
-
-  static sim::SceneDescription scene_of(const Options& o) {
-    sim::SceneDescription scene = sim::parse_scene_file(o.scene);
-    scene.robots.at(0).period = kPeriod;
-    return scene;
-  }
+  ~Twin() { stop(); }
+  Twin(const Twin&) = delete;
+  Twin& operator=(const Twin&) = delete;
+  const std::string& at() const { return at_; }
 
  private:
-  console::SimSession session_;
-  std::unique_ptr<debug::DebugServer> server_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
+  void stop() {
+    if (peer_.pid <= 0) return;
+    kill(peer_.pid, SIGTERM);
+    waitpid(peer_.pid, nullptr, 0);
+    peer_.pid = 0;
+  }
+  Peer peer_;
+  std::string at_;
 };
 
 // One loaded block: the peers run `block` seconds, the loop one more so they end within it.
@@ -418,9 +440,9 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
     std::cout << "  first incomplete stream: " << t.first_failure << "\n";
   const auto stats = server.stats();
   std::cout << "  server: " << stats.accepted << " connections, " << stats.rejected << " rejected, "
-            << stats.samples_sent << " samples sent, " << stats.samples_dropped << " dropped, "
-            << stats.snapshots_lost << " frames missed by the server thread, " << log_lines
-            << " log lines\n";
+            << stats.requests << " requests, " << stats.samples_sent << " samples sent, "
+            << stats.samples_dropped << " dropped, " << stats.snapshots_lost
+            << " frames missed by the server thread, " << log_lines << " log lines\n";
   const bool streams_ok = o.view ? !t.views.empty() && t.first_failure.empty()
                                  : t.streams > 0 && t.complete == t.streams;
   bool ok = streams_ok;
@@ -439,8 +461,9 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
 
 int main(int argc, char** argv) {
   try {
+    if (argc == 3 && std::string(argv[1]) == "--serve-twin") return serve_twin(argv[2]);
     const Options o = read_options(argc, argv);
-    console::SimSession session(Twin::scene_of(o));
+    console::SimSession session(scene_of(o.scene));
     Runtime& rt = *session.runtime(0);
     debug::ServerOptions options;
     options.listen = {"127.0.0.1", 0};
@@ -455,17 +478,16 @@ int main(int argc, char** argv) {
       set_cpu_affinity(where.cpus, "debug_load: --cpu");  // the server thread inherits these
     }
     debug::DebugServer server(options);
-    // Before the loop's CPU and priority are set: the twin's threads inherit neither.
+    where.dir = fs::temp_directory_path() / ("debug_load_" + std::to_string(getpid()));
+    fs::create_directories(where.dir);
     std::unique_ptr<Twin> other;
-    if (o.twin) other = std::make_unique<Twin>(o);
+    if (o.twin) other = std::make_unique<Twin>(o, where);
     if (o.cpu >= 0) set_cpu_affinity(where.loop_cpu, "debug_load: --cpu");
     test::TimedBoundary boundary(server.boundary());
     rt.set_frame_boundary(&boundary);
     where.at = server.endpoint().text();
     if (o.rt_priority > 0) set_realtime_priority(o.rt_priority, "debug_load: --rt-priority");
     auto& sim = session.simulation();
-    where.dir = fs::temp_directory_path() / ("debug_load_" + std::to_string(getpid()));
-    fs::create_directories(where.dir);
 
     Condition quiet{"quiet"}, loaded{"loaded"}, twin{"twin-loaded"};
     PeerTotals totals;
