@@ -69,10 +69,11 @@ class MjWorld : public PhysicsWorld {
   std::vector<MjcfRobot> robots_;
   std::vector<model::JointVector> initial_q_;
   std::vector<MjRobotLayout> layouts_;
-  std::vector<GeomInfo> geoms_;       // by mjModel geom id
-  std::vector<MjMotor> motors_;       // by dof
-  std::vector<int> points_per_body_;  // the contact law's split, by mjModel body id
-  LawFrictionRows friction_rows_;     // the contact law's friction rows this step
+  std::vector<GeomInfo> geoms_;         // by mjModel geom id
+  std::vector<MjMotor> motors_;         // by dof
+  std::vector<int> points_per_body_;    // the contact law's split, by mjModel body id
+  LawFrictionRows friction_rows_;       // the contact law's friction rows this step
+  std::vector<mjtNum> refreshed_qpos_;  // the positions the last step's refresh posed bodies at
   int static_geoms_ = 0;
   bool dirty_ = true;
   mjModel* model_ = nullptr;
