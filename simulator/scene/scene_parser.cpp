@@ -66,8 +66,7 @@ class Parser {
       physics(e);
     } else if (n == "contact") {
       no_children(e);
-      once(e);
-      parse_contact_law(e, out_.physics);
+      contact(e);
     } else if (n == "ground") {
       ground(e);
       unstated_.ground = unstated;
@@ -96,6 +95,16 @@ class Parser {
     const std::string here = e.file() + ":" + std::to_string(e.line());
     const auto [it, fresh] = seen_once_.emplace(std::string(e.name()), here);
     if (!fresh) e.fail("given twice (first at " + it->second + "; expected one per scene)");
+  }
+
+  // <contact>: one per scene, but the scene's own replaces one from a file it includes (a study
+  // that includes a shipped scene states its own law over the shipped one).
+  void contact(const XmlElement& e) {
+    const auto it = seen_once_.find("contact");
+    if (it != seen_once_.end() && law_included_ && e.file() == out_.file) seen_once_.erase(it);
+    once(e);
+    law_included_ = e.file() != out_.file;
+    parse_contact_law(e, out_.physics);
   }
 
   // Boxes, ramps and uneven tiles together stay within the scene limit.
@@ -472,6 +481,7 @@ class Parser {
   }
 
   SceneDescription& out_;
+  bool law_included_ = false;                     // the <contact> so far came from an included file
   std::map<std::string, std::string> seen_once_;  // element name -> "file:line" of the first
   long static_shapes_ = 0;
   PhysicsAttributes physics_over_;
