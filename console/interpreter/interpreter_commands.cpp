@@ -12,6 +12,7 @@
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
+#include "robot/runtime/world_pose.hpp"
 #include "simulator/render/movie_file.hpp"
 #include "simulator/render/snapshot.hpp"
 
@@ -165,7 +166,12 @@ void Interpreter::log(const std::vector<std::string>& a) {
             .log_goto(static_cast<std::size_t>(parse_integer(a[1], "frame", 0, 1000000000000LL)));
     out_ << "frame " << a[1] << " on the blackboard";
     if (!skipped.empty()) out_ << " (" << skipped.size() << " representation(s) skipped)";
-    out_ << "\n";
+    out_ << (local_.shown_pose_logged()
+                 ? ", the robot where the log puts it (robot.torso.*, snapshot)\n"
+                 : "; this log holds no world pose (a robot's, or recorded before " +
+                       std::string(kWorldPoseSince) +
+                       "): snapshot stands the robot on its lowest point, tilted as its IMU "
+                       "measured\n");
   } else if (what == "export") {
     std::vector<std::string> keys;  // the keys `get` takes: representation:X.path, or X.path
     for (auto k = a.begin() + 2; k != a.end(); ++k) {

@@ -5,6 +5,7 @@
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
 #include "robot/runtime/controller_schedule.hpp"
+#include "robot/runtime/world_pose.hpp"
 #include "simulator/lola/lola_codec_link.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
@@ -89,6 +90,7 @@ void SimSession::attach_controllers() {
   packet_links_ = std::move(links);
   runtimes_ = std::move(runtimes);
   observers_.resize(sim_->robot_count());
+  poses_.resize(sim_->robot_count());
   for (int i = 0; i < sim_->robot_count(); ++i) {
     Runtime* rt = runtimes_[i].get();
     const FrameObserver* observer = &observers_[i];
@@ -99,11 +101,17 @@ void SimSession::attach_controllers() {
       continue;
     }
     sim::Simulation* sim = sim_.get();
+    // The log records where the torso stood (read only: the run is the same with or without).
+    if (!poses_[i]) poses_[i] = make_slot<SimulatedTorsoPose>();
+    rt->log_also(std::string(SimulatedTorsoPose::kTypeName), poses_[i].get());
+    auto& pose = slot_value<SimulatedTorsoPose>(*poses_[i]);
     sim_->set_controller(
-        i, [rt, sim, observer,
+        i, [rt, sim, observer, &pose,
             schedule = ControllerSchedule(sim_->scene().robots[i].controller.changes)](
                sim::SimulatedRobot& robot) mutable {
           schedule.apply_due(*rt, sim->time());
+          const sim::TorsoPose p = robot.torso_pose();
+          pose = {p.x, p.y, p.z, p.roll, p.pitch, p.yaw};
           rt->step();
           if (*observer) (*observer)(robot);
         });

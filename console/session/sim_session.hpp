@@ -62,6 +62,8 @@ class SimSession {
   std::vector<std::shared_ptr<const model::RobotModel>> models_;
   std::vector<std::unique_ptr<hal::HardwareLink>> packet_links_;  // per robot, or null
   std::vector<bool> through_packets_;
+  // Per robot with a controller: its torso's world pose at the frame, logged beside the blackboard.
+  std::vector<std::unique_ptr<Slot>> poses_;
   std::vector<std::unique_ptr<Runtime>> runtimes_;
   std::vector<FrameObserver> observers_;  // per robot; empty: none
 };

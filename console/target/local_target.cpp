@@ -6,12 +6,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "console/target/logged_scene.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/output_file.hpp"
 #include "robot/framework/value.hpp"
 #include "robot/runtime/controller_keys.hpp"
 #include "robot/runtime/recorded_config.hpp"
 #include "robot/runtime/replay.hpp"
+#include "simulator/render/png_file.hpp"
+#include "simulator/render/text_overlay.hpp"
 #include "simulator/run_report.hpp"
 #include "simulator/teleport.hpp"
 
@@ -160,16 +163,28 @@ std::string LocalTarget::sim_value(const std::string& key) {
               "replayed, provider:, override:, debug:)");
 }
 
-// While `log goto` shows a frame, robot.* keys are the logged robot's: what its IMU measured.
-// A log holds no world pose, so position and yaw are refused rather than taken from the
-// simulation, which stands elsewhere.
+// While `log goto` shows a frame, robot.torso.* keys are the logged robot's: where a simulation's
+// log recorded its torso, or for a log without a world pose, what its IMU measured (position and
+// yaw are then refused rather than taken from the simulation, which stands elsewhere).
 std::string LocalTarget::logged_robot_value(const std::string& key) {
-  if (key == "robot.torso.roll" || key == "robot.torso.pitch")
+  if (shown_pose_) {
+    const SimulatedTorsoPose& p = *shown_pose_;
+    const std::pair<const char*, double> torso[] = {
+        {"robot.torso.x", p.x},       {"robot.torso.y", p.y},         {"robot.torso.z", p.z},
+        {"robot.torso.roll", p.roll}, {"robot.torso.pitch", p.pitch}, {"robot.torso.yaw", p.yaw}};
+    for (const auto& [k, v] : torso)
+      if (key == k) return number_text(v);
+  } else if (key == "robot.torso.roll" || key == "robot.torso.pitch") {
     return runtime().get(std::string("representation:InertialSensorData.angles[") +
                          (key == "robot.torso.roll" ? "0" : "1") + "]");
-  throw Error(key + ": log frame " + std::to_string(*shown_frame_) +
-              " is shown and a log holds no world pose (robot.torso.roll|pitch come from its "
-              "IMU; run, step or reset return to the simulation)");
+  }
+  throw Error(key + ": log frame " + std::to_string(*shown_frame_) + " is shown and " +
+              (shown_pose_ ? std::string("a log holds the torso's pose only (robot.torso.*)")
+                           : "this log holds no world pose (a robot's, or a simulation's recorded "
+                             "before " +
+                                 std::string(kWorldPoseSince) +
+                                 "; robot.torso.roll|pitch come from its IMU)") +
+              "; run, step or reset return to the simulation");
 }
 
 std::string LocalTarget::get(const std::string& key) {
@@ -269,6 +284,9 @@ std::vector<std::string> LocalTarget::log_goto(std::size_t frame) {
                 (log_->frame_count() ? "0.." + std::to_string(log_->frame_count() - 1)
                                      : std::string("frames (it has none)")));
   auto skipped = runtime().load_frame(*log_, frame);
+  shown_pose_.reset();
+  if (log_->index_of(SimulatedTorsoPose::kTypeName) >= 0)
+    shown_pose_ = log_->read<SimulatedTorsoPose>(frame);
   shown_frame_ = frame;
   return skipped;
 }
@@ -360,11 +378,19 @@ render::WorldRenderer& LocalTarget::renderer() {
 }
 
 void LocalTarget::snapshot(const std::string& png_path, const std::string& view) {
-  if (shown_frame_)
-    throw Error("snapshot: log frame " + std::to_string(*shown_frame_) +
-                " is on the blackboard, but a picture would show the simulation, not the logged "
-                "robot (stride view --log <file> draws a log's robot; run, step or reset return "
-                "to the simulation)");
+  if (shown_frame_) {  // the logged robot in a still copy of the scene; the run is not touched
+    Runtime& rt = runtime();
+    const sim::Simulation shown(logged_scene(session().simulation().scene(), selected_,
+                                             robot().model(), rt.representation<JointSensorData>(),
+                                             rt.representation<InertialSensorData>(), shown_pose_));
+    render::RgbaImage image = render::render_view(renderer(), shown, view, selected_, false);
+    render::draw_overlay(image, {"log frame " + std::to_string(*shown_frame_) + "  t " +
+                                     number_text(rt.representation<FrameInfo>().time) + " s",
+                                 shown_pose_ ? "torso where the log puts it"
+                                             : "no world pose: on its lowest point, IMU tilt"});
+    render::write_png(png_path, image);
+    return;
+  }
   render::write_snapshot(renderer(), session().simulation(), png_path, view, selected_);
 }
 

@@ -12,6 +12,7 @@
 #include "console/target/simulation_target.hpp"
 #include "robot/debug/server.hpp"
 #include "robot/runtime/log.hpp"
+#include "robot/runtime/world_pose.hpp"
 #include "simulator/render/snapshot.hpp"
 
 namespace stride::console {
@@ -52,6 +53,8 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   std::string log_save(const std::string& path, const std::string& destination) override;
   std::string log_load(const std::string& path) override;
   std::vector<std::string> log_goto(std::size_t frame) override;
+  // Whether the frame `log goto` shows holds the torso's world pose (a simulation's log).
+  bool shown_pose_logged() const { return shown_pose_.has_value(); }
   void log_export(const std::string& csv_path, const std::vector<std::string>& keys) override;
   ReplaySummary log_replay() override;
   std::vector<std::string> log_info() override;
@@ -91,6 +94,7 @@ class LocalTarget : public RobotTarget, public SimulationTarget {
   std::unique_ptr<LogReader> log_;
   std::optional<ReplaySummary> replay_;
   std::optional<std::size_t> shown_frame_;           // `log goto`: the frame on the blackboard
+  std::optional<SimulatedTorsoPose> shown_pose_;     // its torso's world pose, if logged
   std::unique_ptr<render::WorldRenderer> renderer_;  // made at the first picture
   render::VideoRecorder video_;
   int selected_ = 0;       // robot index

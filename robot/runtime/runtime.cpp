@@ -12,6 +12,7 @@
 #include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/recorded_config.hpp"
 #include "robot/runtime/runtime_events.hpp"
+#include "robot/runtime/world_pose.hpp"
 
 namespace stride {
 
@@ -466,6 +467,7 @@ std::unique_ptr<LogWriter> Runtime::open_log(const std::string& path,
                                              const LogMetadata& metadata) const {
   std::vector<std::pair<std::string, const Slot*>> slots;
   for (const auto& s : slots_) slots.emplace_back(s->desc().name, s.get());
+  slots.insert(slots.end(), log_also_.begin(), log_also_.end());
   // The log says what it ran with, so a replay after `mr` or `set module:` builds the same.
   LogMetadata all = config_metadata(running_config());
   for (const auto& [key, value] : metadata) all[key] = value;
@@ -486,6 +488,7 @@ std::vector<std::string> Runtime::load_frame(const LogReader& log, std::size_t f
   std::vector<std::pair<Slot*, std::string_view>> loads;
   for (std::size_t i = 0; i < log.types().size(); ++i) {
     const auto& t = log.types()[i];
+    if (t.name == SimulatedTorsoPose::kTypeName) continue;  // the world's, not the blackboard's
     auto it = by_name_.find(t.name);
     if (it == by_name_.end() || !same_type(it->second->desc(), *t.desc)) {
       skipped.push_back(t.name);

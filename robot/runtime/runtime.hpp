@@ -101,6 +101,11 @@ class Runtime {
   std::unique_ptr<LogWriter> open_log(const std::string& path,
                                       const LogMetadata& metadata = {}) const;
   void stop_log();
+  // Logged with every frame after the blackboard's representations, under `name`, without being
+  // on the blackboard (a simulation's SimulatedTorsoPose). Not owned; outlives this runtime's logs.
+  void log_also(std::string name, const Slot* slot) {
+    log_also_.emplace_back(std::move(name), slot);
+  }
   bool logging() const { return log_ != nullptr; }
   std::size_t logged_frames() const;  // frames in the log being recorded (0 without one)
   // Under LogErrorPolicy::StopLogging: why the last log ended by itself (a full disk), as one
@@ -151,6 +156,7 @@ class Runtime {
 
   std::vector<std::unique_ptr<Slot>> slots_;  // blackboard, creation order
   std::map<std::string, Slot*, std::less<>> by_name_;
+  std::vector<std::pair<std::string, const Slot*>> log_also_;             // beside the blackboard
   std::map<std::string, std::unique_ptr<Slot>, std::less<>> parameters_;  // module -> parameters
   std::vector<ModuleDeclaration> declarations_;
   std::map<std::string, std::string> chosen_;  // current provider choices
