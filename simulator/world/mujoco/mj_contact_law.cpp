@@ -20,29 +20,6 @@ int moving_body(const mjModel* m, const mjContact& c) {
   return b1 == 0 ? b2 : b1;
 }
 
-// The depth of a box-box contact as ODE's collider gives it: along the contact normal through the
-// contact point, from the face of one box that faces the other to the other's (MuJoCo 2.2.2's
-// box-box collider reports half of it for boxes resting face on face). Only each box's face most
-// across the normal bounds it: a point on a box's edge lies on its side faces too, where a slab
-// test over all three axes finds an empty interval as soon as the boxes tilt by rounding.
-double box_box_depth(const mjModel* m, const mjData* d, const mjContact& c) {
-  const Eigen::Vector3d p(c.pos[0], c.pos[1], c.pos[2]), n(c.frame[0], c.frame[1], c.frame[2]);
-  double lo = -1e9, hi = 1e9;  // the interval of s with p + s n between both boxes' faces
-  for (const int g : {c.geom1, c.geom2}) {
-    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> r(d->geom_xmat + 9 * g);
-    const Eigen::Vector3d o =
-        r.transpose() * (p - Eigen::Map<const Eigen::Vector3d>(d->geom_xpos + 3 * g));
-    const Eigen::Vector3d dir = r.transpose() * n;
-    int k = 0;
-    dir.cwiseAbs().maxCoeff(&k);
-    const double half = m->geom_size[3 * g + k];
-    const double a = (-half - o[k]) / dir[k], b = (half - o[k]) / dir[k];
-    lo = std::max(lo, std::min(a, b));
-    hi = std::min(hi, std::max(a, b));
-  }
-  return std::max(0.0, hi - lo);
-}
-
 void set_row(mjData* d, int row, double r, double k, double b) {
   d->efc_R[row] = r;
   d->efc_D[row] = 1 / r;
@@ -54,13 +31,9 @@ void set_row(mjData* d, int row, double r, double k, double b) {
 
 }  // namespace
 
-void orient_law_contacts(const mjModel* m, mjData* d) {
-  for (int i = 0; i < d->ncon; ++i) {
-    mjContact& c = d->contact[i];
-    if (m->geom_type[c.geom1] == mjGEOM_BOX && m->geom_type[c.geom2] == mjGEOM_BOX)
-      c.dist = -box_box_depth(m, d, c);
-    c.dim = 1;  // the normal only: the friction gets rows of its own (mj_law_friction.hpp)
-  }
+void orient_law_contacts(mjData* d) {
+  // The normal only: the friction gets rows of its own (mj_law_friction.hpp).
+  for (int i = 0; i < d->ncon; ++i) d->contact[i].dim = 1;
 }
 
 void impose_law_rows(const mjModel* m, mjData* d, const ContactLaw& law,

@@ -12,9 +12,8 @@
 
 namespace stride::sim {
 
-// Before mj_makeConstraint: every contact of dim 1 (its normal), and a box-box contact's depth
-// measured as ODE's collider measures it.
-void orient_law_contacts(const mjModel* m, mjData* d);
+// Before mj_makeConstraint: every contact of dim 1 (its normal).
+void orient_law_contacts(mjData* d);
 
 // After mj_makeConstraint: each contact's normal row's R, D and reference terms from the law, the
 // body's spring split over its points against the static scene (world body 0).

@@ -149,7 +149,8 @@ void MjWorld::step1_with_law() {
   mj_crb(model_, data_);
   mj_factorM(model_, data_);
   mj_collision(model_, data_);
-  orient_law_contacts(model_, data_);
+  box_contacts_.replace(model_, data_, physics_.max_contacts);
+  orient_law_contacts(data_);
   mj_makeConstraint(model_, data_);
   mj_transmission(model_, data_);
   impose_law_rows(model_, data_, law, points_per_body_);

@@ -9,6 +9,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "simulator/world/mujoco/mj_box_contacts.hpp"
 #include "simulator/world/mujoco/mj_law_friction.hpp"
 #include "simulator/world/mujoco/mjcf_writer.hpp"
 #include "simulator/world/physics_world.hpp"
@@ -73,6 +74,7 @@ class MjWorld : public PhysicsWorld {
   std::vector<MjMotor> motors_;         // by dof
   std::vector<int> points_per_body_;    // the contact law's split, by mjModel body id
   LawFrictionRows friction_rows_;       // the contact law's friction rows this step
+  OdeBoxBoxContacts box_contacts_;      // the contact law's box-box contacts, ODE's
   std::vector<mjtNum> refreshed_qpos_;  // the positions the last step's refresh posed bodies at
   int static_geoms_ = 0;
   bool dirty_ = true;
