@@ -9,6 +9,7 @@
 #include "behaviours/balance/modules/hat_excursion.hpp"
 #include "behaviours/posture/walking_joint_request.hpp"
 #include "behaviours/walking/modules/pattern_walk.hpp"
+#include "behaviours/walking/modules/walk_plan.hpp"
 #include "behaviours/walking/pattern/adjusted_pattern.hpp"
 #include "behaviours/walking/pattern/pattern_joints.hpp"
 #include "robot/nao/nao_dimensions.hpp"
@@ -37,7 +38,8 @@ class PushRecoveryWalk final : public Module {
         model_(c.require<BalanceModel>()),
         params_(c.parameters<PushRecoveryWalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
-        state_(c.provide<PushRecoveryState>()) {}
+        state_(c.provide<PushRecoveryState>()),
+        plan_(c.provide<WalkPlan>()) {}
 
   void update() override {
     if (!pattern_ || !same_walk_parameters(params_.walk, built_from_)) {
@@ -57,6 +59,7 @@ class PushRecoveryWalk final : public Module {
     const bool walking = t >= 0 && t < pattern_->duration();
     if (params_.recovery.enabled && walking && com_.valid && model_.valid) respond(tc, s);
     request_ = walking_request(walking::leg_joints(s));
+    plan_ = walking::walk_plan(s, *pattern_, tc);  // with the steps a response has moved
     if (request_.ik_beyond_limits != 0) ++beyond_limit_frames_;
     request_.ik_beyond_limit_frames = beyond_limit_frames_;
     apply_offsets(s.support);
@@ -184,6 +187,7 @@ class PushRecoveryWalk final : public Module {
   const PushRecoveryWalkParameters& params_;
   WalkingJointRequest& request_;
   PushRecoveryState& state_;
+  WalkPlan& plan_;
   std::optional<walking::AdjustedPattern> pattern_;
   WalkParameters built_from_;
   std::optional<double> first_time_;

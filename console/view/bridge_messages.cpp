@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "console/build_revision.hpp"
 #include "console/interpreter/interpreter.hpp"
@@ -35,6 +36,29 @@ sim::Simulation* local_simulation(console::Interpreter& in) {
   console::LocalTarget& local = in.local();
   if (&in.target() != static_cast<console::RobotTarget*>(&local) || !local.loaded()) return nullptr;
   return &local.session().simulation();
+}
+
+// Whether the walk's plan is what moves the robot: WalkPlan's provider is among the modules that
+// JointRequest's provider depends on (after `mr JointRequest Stand` a walk may still run and plan,
+// but its plan is not what the robot does, so it is not drawn).
+bool plan_drives_joints(console::RobotTarget& t) {
+  const auto decls = t.module_declarations();
+  if (!decls) return true;  // an older robot does not say: drawn as before
+  const std::string planner = t.provider_of("WalkPlan");
+  if (planner.empty() || planner.starts_with('(')) return false;  // built in: nobody plans
+  std::vector<std::string> todo{t.provider_of("JointRequest")};
+  std::set<std::string> seen;
+  while (!todo.empty()) {
+    const std::string m = todo.back();
+    todo.pop_back();
+    if (m == planner) return true;
+    if (!seen.insert(m).second) continue;
+    const auto it = std::find_if(decls->begin(), decls->end(),
+                                 [&](const ModuleDeclaration& d) { return d.name == m; });
+    if (it == decls->end()) continue;
+    for (const std::string& r : it->requires_) todo.push_back(t.provider_of(r));
+  }
+  return false;
 }
 
 }  // namespace
@@ -115,7 +139,8 @@ void ViewBridge::observe_keys() {
   std::vector<std::string> keys = watch_keys_;
   try {
     const std::vector<std::string> reps = interpreter_.target().representations();
-    walk_plan_ = std::find(reps.begin(), reps.end(), "WalkPlan") != reps.end();
+    walk_plan_ = std::find(reps.begin(), reps.end(), "WalkPlan") != reps.end() &&
+                 plan_drives_joints(interpreter_.target());
   } catch (const Error&) {
     walk_plan_ = false;  // no scene, or a robot that cannot say
   }
@@ -124,10 +149,13 @@ void ViewBridge::observe_keys() {
   interpreter_.set_observed_extra(std::move(keys));
 }
 
-void ViewBridge::add_walk_plan(RobotFrame& f, const model::RobotModel& model) {
+void ViewBridge::add_walk_plan(RobotFrame& f, const model::RobotModel& model, bool sensed_only) {
   if (!walk_plan_) return;
   try {
-    if (auto plan = read_walk_plan(value(kWalkPlanKey))) place_walk_plan(f, model, *plan);
+    if (auto plan = read_walk_plan(value(kWalkPlanKey))) {
+      if (sensed_only) stand_on_plan(f, model, *plan);  // no world pose: where its plan goes
+      place_walk_plan(f, model, *plan);
+    }
   } catch (const Error&) {
     // not on the blackboard (any more): nothing planned to draw
   }
@@ -140,7 +168,7 @@ Json ViewBridge::robots_json() {
     for (int i = 0; s && i < s->robot_count(); ++i) {
       RobotFrame f = simulated_robot_frame(*s, i);
       if (s->robot(i).name() == interpreter_.local().selected_robot())
-        add_walk_plan(f, s->robot(i).model());  // the console's values are this robot's
+        add_walk_plan(f, s->robot(i).model(), false);  // the console's values are this robot's
       robots.push_back(robot_frame_json(f));
     }
     return robots;
@@ -153,7 +181,7 @@ Json ViewBridge::robots_json() {
     RobotFrame f = kinematic_robot_frame(*m, s ? s->robot(0).name() : interpreter_.target().name(),
                                          named_numbers(value(kJointsKey)), angles[0], angles[1]);
     f.fell = std::abs(angles[0]) > kFallTilt || std::abs(angles[1]) > kFallTilt;
-    add_walk_plan(f, *m);
+    add_walk_plan(f, *m, true);
     robots.push_back(robot_frame_json(f));
   } catch (const Error&) {
     // a robot without those representations is drawn without its body
@@ -245,6 +273,10 @@ void ViewBridge::check_events() {
           f.module + " failed at frame " + std::to_string(f.frame) + ": " + f.message);
   }
   faults_ = faults;
+  if (rt && rt->plan_generation() != plan_generation_) {  // an `mr` typed anywhere
+    plan_generation_ = rt->plan_generation();
+    observe_keys();
+  }
 }
 
 namespace {

@@ -1,7 +1,8 @@
 #pragma once
 // A robot seen only through its sensors (a physical robot, a log): its links placed from joint
 // angles and the IMU's torso roll and pitch, with the lower foot standing on the ground at the
-// origin (a robot has no true world pose; yaw and position are unknown and drawn as zero).
+// origin (a robot has no true world pose; yaw and position are unknown and drawn as zero, until a
+// walk's plan places it: stand_on_plan in walk_plan_overlay.hpp).
 #include <map>
 #include <string>
 #include <string_view>

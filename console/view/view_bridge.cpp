@@ -152,6 +152,7 @@ std::string ViewBridge::execute(const std::string& line, std::string& error) {
   const std::string word = first_word(line);
   if (error.empty() && word == "log") note_log_command(line, captured.str());
   if (changes_scene(word)) refresh_scene();
+  if (word == "mr") observe_keys();  // whether the walk's plan still drives the robot
   return captured.str();
 }
 

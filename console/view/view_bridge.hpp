@@ -70,7 +70,8 @@ class ViewBridge {
   bool kinematic();
   const model::RobotModel* kinematic_model();
   void observe_keys();  // what a remote robot streams for the bridge
-  void add_walk_plan(RobotFrame& f, const model::RobotModel& model);  // ZMP ref, footsteps
+  // ZMP ref, footsteps; `sensed_only`: a robot without a world pose also stands on the plan.
+  void add_walk_plan(RobotFrame& f, const model::RobotModel& model, bool sensed_only);
   double time();
   std::uint64_t step_count();
   int steps_per_frame();
@@ -90,7 +91,8 @@ class ViewBridge {
   std::uint64_t last_steps_ = ~std::uint64_t{0};  // steps at the last frame sent
   bool last_running_ = false;
   bool fell_ = false;
-  std::size_t faults_ = 0;  // module faults already told
+  std::size_t faults_ = 0;             // module faults already told
+  std::uint64_t plan_generation_ = 0;  // the local runtime's module plan last looked at
   std::chrono::steady_clock::time_point last_status_{};
   std::optional<std::chrono::system_clock::time_point> last_step_wall_;  // frame.wall
   std::unique_ptr<model::RobotModel> shipped_model_;  // a remote robot's (the shipped NAO)

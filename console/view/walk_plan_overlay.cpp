@@ -93,6 +93,27 @@ std::optional<WalkPlanValues> read_walk_plan(std::string_view printed) {
   return p;
 }
 
+void stand_on_plan(RobotFrame& f, const model::RobotModel& model, const WalkPlanValues& p) {
+  const auto a = anchors(f, model, p);
+  if (!a) return;
+  const auto& [plan, drawn] = *a;
+  Eigen::Isometry3d move = Eigen::Isometry3d::Identity();
+  move.translate(Eigen::Vector3d(plan.x(), plan.y(), 0));
+  move.rotate(Eigen::AngleAxisd(plan.z() - drawn.z(), Eigen::Vector3d::UnitZ()));
+  move.translate(Eigen::Vector3d(-drawn.x(), -drawn.y(), 0));
+  for (auto& link : f.links) link = move * link;
+  if (f.com) f.com = move * *f.com;
+  auto flat = [&](const Eigen::Vector2d& v) {
+    return Eigen::Vector2d((move * Eigen::Vector3d(v.x(), v.y(), 0)).head<2>());
+  };
+  for (auto& v : f.support) v = flat(v);
+  if (f.cop) f.cop = flat(*f.cop);
+  for (auto& [point, force] : f.contacts) {
+    point = move * point;
+    force = move.linear() * force;
+  }
+}
+
 void place_walk_plan(RobotFrame& f, const model::RobotModel& model, const WalkPlanValues& p) {
   const auto a = anchors(f, model, p);
   if (!a) return;

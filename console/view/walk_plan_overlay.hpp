@@ -26,6 +26,11 @@ inline constexpr const char* kWalkPlanKey = "representation:WalkPlan";  // one k
 // not what it should be, or the plan was never written.
 std::optional<WalkPlanValues> read_walk_plan(std::string_view printed);
 
+// Moves a robot drawn from its sensors alone (kinematic_frame.hpp) so that its drawn support lies
+// where the plan puts it: a robot with no world pose walks across the view along its own plan
+// (the planned path, not the true one, which its slip and falls can leave).
+void stand_on_plan(RobotFrame& f, const model::RobotModel& model, const WalkPlanValues& plan);
+
 // Sets f.zmp_ref, f.footsteps and f.walk_frame from `plan`; `model` names f.links (LFoot, RFoot).
 void place_walk_plan(RobotFrame& f, const model::RobotModel& model, const WalkPlanValues& plan);
 

@@ -101,5 +101,46 @@ TEST(WalkPlanOverlay, ReadsThePrintedPlanAndNothingElse) {
   EXPECT_FALSE(read_walk_plan("[0.1, 0.2]"));
 }
 
+// A robot seen through its sensors alone stands where its plan puts it: the drawn support foot
+// moves onto the planned one, turned to its heading, and every link, the CoM and the support
+// polygon move with it (the body keeps its shape); the walk frame is then the world's.
+TEST(WalkPlanOverlay, ARobotWithoutAWorldPoseStandsOnItsPlan) {
+  RobotFrame f = drawn_feet({0.9, 2.1, M_PI / 2}, {1.0, 2.0, M_PI / 2});
+  f.com = Eigen::Vector3d(0.95, 2.05, 0.3);
+  f.support = {{1.0, 2.0}, {1.1, 2.0}, {1.1, 2.05}};
+  const RobotFrame before = f;
+  stand_on_plan(f, nao(), plan(2));
+  int right = -1, left = -1;
+  for (std::size_t i = 0; i < nao().links.size(); ++i) {
+    if (nao().links[i].name == "RFoot") right = static_cast<int>(i);
+    if (nao().links[i].name == "LFoot") left = static_cast<int>(i);
+  }
+  ASSERT_GE(right, 0);
+  ASSERT_GE(left, 0);
+  const Eigen::Isometry3d& r = f.links[static_cast<std::size_t>(right)];
+  EXPECT_NEAR(r.translation().x(), 0.14, 1e-12);
+  EXPECT_NEAR(r.translation().y(), -0.05, 1e-12);
+  EXPECT_NEAR(r.translation().z(), 0.045, 1e-12);  // still on the ground
+  EXPECT_NEAR(std::atan2(r.linear()(1, 0), r.linear()(0, 0)), 0.0, 1e-12);
+  // The left foot was drawn 0.1 m to the robot's left (-x, facing +y) and 0.1 m ahead (+y).
+  const Eigen::Vector3d l = f.links[static_cast<std::size_t>(left)].translation();
+  EXPECT_NEAR(l.x(), 0.14 + 0.1, 1e-12);
+  EXPECT_NEAR(l.y(), -0.05 + 0.1, 1e-12);
+  EXPECT_NEAR((*f.com - r.translation()).norm(),
+              (*before.com - before.links[static_cast<std::size_t>(right)].translation()).norm(),
+              1e-12);
+  ASSERT_EQ(f.support.size(), 3u);
+  EXPECT_NEAR(f.support[0].x(), 0.14, 1e-12);
+  EXPECT_NEAR(f.support[0].y(), -0.05, 1e-12);
+  EXPECT_NEAR(f.support[1].x(), 0.14, 1e-12);  // +x in the drawn frame is the robot's right
+  EXPECT_NEAR(f.support[1].y(), -0.05 - 0.1, 1e-12);
+  // Placed afterwards, the walk frame is the world's own.
+  place_walk_plan(f, nao(), plan(2));
+  ASSERT_TRUE(f.walk_frame && f.zmp_ref);
+  EXPECT_NEAR(f.walk_frame->norm(), 0.0, 1e-12);
+  EXPECT_NEAR(f.zmp_ref->x(), 0.12, 1e-12);
+  EXPECT_NEAR(f.zmp_ref->y(), -0.01, 1e-12);
+}
+
 }  // namespace
 }  // namespace stride::view

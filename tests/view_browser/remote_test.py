@@ -2,7 +2,8 @@
 """Mode remote: `stride view --connect` to a robot runtime's debug server (here a `stride run
 --debug` walking in real time, as a NAO would): the page draws the robot from what the bridge
 sends (both side colours on screen, the feet below the torso) and a plot follows the robot's
-FrameInfo.time as the robot's own clock runs; the robot gone, the banner says the link is lost."""
+FrameInfo.time as the robot's own clock runs; with no world pose the robot stands on its plan and
+walks across the view; the robot gone, the banner says the link is lost."""
 import subprocess
 import sys
 import threading
@@ -55,6 +56,13 @@ def test(stride, d):
             print(f"remote graph: {total} edges, PatternWalk's: {edges}")
             wait_js(d, "strideView.frame.robots[0].walk_frame && strideView.frame.robots[0].footsteps.length >= 2"
                        " && strideView.frame.robots[0].zmp_ref", 20, "the robot's WalkPlan streamed (ZMP ref, footsteps)")
+            # No world pose over the wire: the robot stands on its own plan, so it walks across the
+            # view (its walk frame is the world's) instead of treading on the spot at the origin.
+            x0 = d.execute_script("return strideView.frame.robots[0].links[0][0]")
+            x1 = wait_js(d, f"strideView.frame.robots[0].links[0][0] > {x0} + 0.1 &&"
+                            " strideView.frame.robots[0].links[0][0]", 30, "the remote robot walking forward")
+            wf = d.execute_script("return strideView.frame.robots[0].walk_frame")
+            check(max(abs(v) for v in wf) < 1e-6, f"walk frame {wf}: not the world's once on its plan")
             d.find_element(By.ID, "tab-data").click()
             tree_button(d, KEY, "tree-plot")
             samples = wait_js(d, f"strideView.store.t.length >= 50 && strideView.store.cols.get('{KEY}')", 30,
@@ -71,7 +79,7 @@ def test(stride, d):
             kind = wait_js(d, "!document.getElementById('banner').hidden && document.getElementById('banner').dataset.kind",
                            15, "the banner after the robot went away")
             check(kind == "link_lost", f"banner kind {kind!r} after the robot went away")
-            print(f"remote robot at {robot.at}: {len(samples)} samples, torso {torso_z:.3f} m over its lowest link "
+            print(f"remote robot at {robot.at}: walked from x {x0:.3f} to {x1:.3f} m on its plan; {len(samples)} samples, torso {torso_z:.3f} m over its lowest link "
                   f"{foot_z:.3f} m; {blue} blue, {orange} orange pixels; gone: "
                   f"{d.find_element(By.ID, 'banner-text').text}")
     finally:

@@ -2,7 +2,8 @@
 """The ZMP reference and planned footsteps overlays mid-walk: with both on, the page's ZMP marker,
 its trail and the footstep soles are drawn where the frame's walk frame puts what `get
 representation:WalkPlan` prints in the console pane (within 1 cm), footsteps ahead of the robot,
-left blue and right orange, and the walk frame anchored on the drawn support foot."""
+left blue and right orange, and the walk frame anchored on the drawn support foot; PushRecoveryWalk
+plans too, and after `mr JointRequest Stand` no plan is drawn (the walk no longer moves the robot)."""
 import math
 import sys
 
@@ -82,6 +83,19 @@ def test(stride, d):
         gone = d.execute_script("const o = strideView.overlays; return !o.zmp.visible && !o.trailLine.visible"
                                 " && !o.dynamic.children.some(c => c.userData.footstep);")
         check(gone, "the ZMP and footstep overlays stay drawn when switched off")
+        # Push recovery's walk plans too; a walk whose plan no longer moves the robot draws none.
+        d.find_element(By.ID, "ov-footsteps").click()
+        soles = "strideView.overlays.dynamic.children.filter(c => c.userData.footstep).length"
+        state, text = console(d, "mr WalkingJointRequest PushRecoveryWalk")
+        check(state == "ok", f"mr WalkingJointRequest PushRecoveryWalk: {text!r}")
+        console(d, "run 1", timeout=60)
+        drawn = wait_js(d, f"strideView.frame.t > {page['t']} + 0.9 && {soles}", 10, "PushRecoveryWalk's footsteps")
+        check(drawn == int(printed(d, "steps")[0]), f"{drawn} soles drawn for PushRecoveryWalk's plan")
+        state, text = console(d, "mr JointRequest Stand")
+        check(state == "ok", f"mr JointRequest Stand: {text!r}")
+        console(d, "run 0.5", timeout=60)
+        wait_js(d, f"strideView.frame.t > {page['t']} + 1.4 && !strideView.frame.robots[0].walk_frame"
+                   f" && {soles} === 0", 10, "no plan drawn while Stand moves the robot")
         print(f"t={page['t']:.2f} s: ZMP ref {page['zmp'][0]:.3f},{page['zmp'][1]:.3f} (trail {page['trail']}), "
               f"{steps} footsteps, walk frame {[round(v, 3) for v in wf]}")
 

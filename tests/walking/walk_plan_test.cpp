@@ -5,6 +5,7 @@
 
 #include "behaviours/module_catalogue.hpp"
 #include "behaviours/walking/modules/walk_plan.hpp"
+#include "behaviours/walking/pattern/adjusted_pattern.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 
 namespace stride {
@@ -50,5 +51,35 @@ TEST(WalkPlan, ZmpFeetAndTheNextLandingsOfThePattern) {
   EXPECT_EQ(walking::walk_plan(pattern.sample(pattern.duration()), feet, pattern.duration()).steps,
             0);
 }
+// A re-planned walk (push recovery's step adjustment) lists its landings where the moved steps now
+// are: the moved swing's landing by the step, the later ones by the walk's offset, and the feet of
+// the plan are the adjusted pattern's.
+TEST(WalkPlan, AMovedStepIsPlannedWhereItNowLands) {
+  walking::AdjustedPattern pattern(walking::preset("medium"));
+  const walking::Footsteps& feet = pattern.base().footsteps();
+  const int j = 6;
+  const double now = feet.swing_start(j) + 0.02;
+  const WalkPlan before = walking::walk_plan(pattern.sample(now), pattern, now);
+  const WalkPlan original = walking::walk_plan(pattern.base().sample(now), feet, now);
+  for (int i = 0; i < kWalkPlanSteps; ++i) {  // unchanged: the same plan as the pattern's own
+    EXPECT_EQ(before.step_x[i], original.step_x[i]);
+    EXPECT_EQ(before.step_y[i], original.step_y[i]);
+  }
+  const Eigen::Vector2d step(0.04, 0.02);
+  ASSERT_TRUE(pattern.adjust_step(now, step, 0.06).has_value());
+  const walking::PatternSample s = pattern.sample(now);
+  const WalkPlan p = walking::walk_plan(s, pattern, now);
+  ASSERT_EQ(p.steps, kWalkPlanSteps);
+  EXPECT_EQ(p.left_foot[0], s.left_foot.x());
+  EXPECT_EQ(p.right_foot[1], s.right_foot.y());
+  // Swing j is the first listed: it lands moved by the step; the next (the other foot) follows
+  // with the whole walk's offset, as every later landing does.
+  for (int i = 0; i < kWalkPlanSteps; ++i) {
+    EXPECT_EQ(p.step_foot[i], original.step_foot[i]);
+    EXPECT_NEAR(p.step_x[i] - original.step_x[i], step.x(), 1e-12) << "step " << i;
+    EXPECT_NEAR(p.step_y[i] - original.step_y[i], step.y(), 1e-12) << "step " << i;
+  }
+}
+
 }  // namespace
 }  // namespace stride

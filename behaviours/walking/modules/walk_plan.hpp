@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "behaviours/walking/pattern/adjusted_pattern.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 #include "robot/framework/reflect.hpp"
 
@@ -37,6 +38,8 @@ namespace walking {
 // The plan at pattern time `t` (already clamped to [0, duration]) from its sample there: the
 // landings of the swings not yet ended, soonest first.
 WalkPlan walk_plan(const PatternSample& sample, const Footsteps& feet, double t);
+// The same for a walk re-planned on the way: its landings as the moved steps now have them.
+WalkPlan walk_plan(const PatternSample& sample, const AdjustedPattern& pattern, double t);
 }  // namespace walking
 
 }  // namespace stride

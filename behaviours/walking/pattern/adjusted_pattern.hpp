@@ -41,6 +41,10 @@ class AdjustedPattern {
   double duration() const { return base_.duration(); }
   const StretchedKneePattern& base() const { return base_; }
   Eigen::Vector2d total_offset() const { return total_; }
+  // Where foot f is planned at t: the original plan's place moved by the changes made so far.
+  Eigen::Vector3d foot(Foot f, double t) const {
+    return base_.footsteps().foot(f, t) + offset_at(feet_[index_of(f)], t);
+  }
 
   // The swing in flight at `now` if it lands at least `min_time` later, else the next one.
   std::optional<int> swing_to_adjust(double now, double min_time) const;
