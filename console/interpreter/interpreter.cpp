@@ -129,7 +129,8 @@ void Interpreter::load(const std::string& path) {
 }
 
 std::uint64_t Interpreter::steps_for(double seconds) const {
-  const double dt = remote_ ? remote_->step_seconds() : local_.step_seconds();
+  // A robot whose loop starts with its first console has no period for a moment after connect.
+  const double dt = remote_ ? remote_->refresh_period(2.0) : local_.step_seconds();
   if (!(dt > 0))
     throw Error(remote_ ? remote_->name() + " has no control period yet (its loop has not run)"
                         : "no scene loaded (use: load <scene.xml>)");

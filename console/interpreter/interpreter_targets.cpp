@@ -71,7 +71,8 @@ void Interpreter::connect(const std::vector<std::string>& a) {
   }
   remote_ = remote.get();
   remotes_.emplace(remote->label(), std::move(remote));
-  out_ << "connected to " << remote_->name() << " (period " << remote_->step_seconds() << " s"
+  // A robot that waited for this console starts its loop now: its period comes a frame later.
+  out_ << "connected to " << remote_->name() << " (period " << remote_->refresh_period(1.0) << " s"
        << (remote_->read_only() ? ", read-only" : "") << ")\n";
 }
 

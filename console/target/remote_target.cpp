@@ -1,9 +1,11 @@
 #include "console/target/remote_target.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
@@ -148,6 +150,15 @@ std::vector<std::string> RemoteTarget::providers_available(const std::string& re
 
 std::optional<std::vector<ModuleDeclaration>> RemoteTarget::module_declarations() {
   return debug::module_graph_of(call(request(Op::List))->fields());
+}
+
+double RemoteTarget::refresh_period(double patience) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(patience);
+  while (!(period_ > 0) && std::chrono::steady_clock::now() < until) {
+    list();  // sets period_ once the robot's loop has run
+    if (!(period_ > 0)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return period_;
 }
 
 void RemoteTarget::restart() {

@@ -28,6 +28,9 @@ class RemoteTarget final : public RobotTarget {
 
   std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
   double step_seconds() const override { return period_; }
+  // Asks the robot its period again while it has none (a robot that starts its loop when the
+  // first console connects), waiting up to `patience` s; returns step_seconds().
+  double refresh_period(double patience);
   std::string time_text() override;
   void observe(const std::vector<std::string>& keys) override { observed_ = keys; }
   std::uint64_t samples_dropped() const override { return dropped_; }

@@ -79,8 +79,10 @@ TEST(RobotSigstop, StoppedRobotIsALostClientAndTheSimulatorEndsOnTime) {
 }
 
 TEST(RobotSigstop, StoppedConsoleCostsTheControlLoopNothing) {
-  test::RobotOnFakeLola r("sigstop_console", "",
-                          {"--debug", "127.0.0.1:0", "--log-dir", ChildProcess::scratch("")});
+  // --no-wait: the controller runs from the start, so the quiet phase measures its loop alone.
+  test::RobotOnFakeLola r(
+      "sigstop_console", "",
+      {"--debug", "127.0.0.1:0", "--no-wait", "--log-dir", ChildProcess::scratch("")});
   ASSERT_TRUE(r.connected) << r.robot->err();
   auto& lola = r.lola;
   auto& robot = *r.robot;
