@@ -70,7 +70,8 @@ constexpr std::string_view kView =
 constexpr std::string_view kLog =
     "  log start <file> records every representation each frame (and the providers and\n"
     "  parameters it ran with) until log stop; log load <file> opens one, log info lists\n"
-    "  it, log goto <frame> shows a frame, log export <csv> <key>... writes columns, log\n"
+    "  it, log goto <frame> shows a frame (on the blackboard; robot.torso.* and snapshot\n"
+    "  show the logged robot), log export <csv> <key>... writes columns, log\n"
     "  replay runs the modules again. Connected to a robot, log save <file> downloads its\n"
     "  log (checked by SHA-256).\n"
     "  example:  log start /tmp/walk.log; run 5; log stop; log load /tmp/walk.log; log replay\n"
