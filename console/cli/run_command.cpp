@@ -145,7 +145,12 @@ int run_main(Args args, std::ostream& out, std::ostream& err) {
           console::progress_settings());
       console::HeadlessRun run{.seconds = seconds, .interrupt = &interrupt, .progress = &progress};
       std::optional<LolaRestarts> restarts;
-      if (server) restarts.emplace(session, *server, lola);
+      if (server) try {
+          restarts.emplace(session, *server, lola);
+        } catch (const Error& e) {  // e.g. a socket path too long for one more suffix
+          err << "lola: no restart side channel (" << e.what() << "): restart is the robot's alone"
+              << std::endl;
+        }
       if (recorder.active() || restarts)
         run.after_step = [&] {
           if (recorder.active()) recorder.after_step(renderer, sim);
