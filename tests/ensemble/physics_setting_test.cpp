@@ -16,15 +16,19 @@ std::string scene(const std::string& rel) {
 }
 
 TEST(PhysicsSetting, SetsOnlyTheNamedAttributes) {
+  // The walk states its converged setting: the exact solver at 1 ms under the default law.
   const auto as_written = parse_scene_file(scene("scenes/walking/open_loop_medium.xml"));
-  EXPECT_EQ(as_written.physics.iterations, 20);
+  EXPECT_EQ(as_written.physics.solver, PhysicsSettings::Solver::Exact);
   EXPECT_DOUBLE_EQ(as_written.physics.sor, 1.3);
+  ASSERT_TRUE(as_written.physics.contact_law);
   const auto s = parse_scene_file(scene("scenes/walking/open_loop_medium.xml"),
-                                  parse_physics_setting("iterations=40,sor=1.0"));
+                                  parse_physics_setting("solver=iterative,iterations=40,sor=1.0"));
   EXPECT_EQ(s.physics.iterations, 40);
   EXPECT_DOUBLE_EQ(s.physics.sor, 1.0);
   EXPECT_DOUBLE_EQ(s.physics.step, 0.001);
   EXPECT_EQ(s.physics.solver, PhysicsSettings::Solver::Iterative);
+  ASSERT_TRUE(s.physics.contact_law);  // the setting leaves the scene's law
+  EXPECT_DOUBLE_EQ(s.physics.contact_law->stiffness, 1e5);
   const auto exact = parse_scene_file(scene("scenes/walking/open_loop_medium.xml"),
                                       parse_physics_setting("solver=exact,step=0.5ms"));
   EXPECT_EQ(exact.physics.solver, PhysicsSettings::Solver::Exact);

@@ -24,14 +24,14 @@ TEST(PhysicsOption, BecomesSceneSettingsOverThePhysicsElement) {
 }
 
 TEST(PhysicsOption, SetsTheSolverOfAWalkingScene) {
-  // hip_medium states 20 iterations of the iterative solver; the option replaces the solver.
+  // hip_medium states the exact solver at 1 ms; the option replaces the solver and the step.
   const auto plain = load_edited_scene(kScenes + "hip_medium.xml", {});
-  EXPECT_EQ(plain.physics.solver, sim::PhysicsSettings::Solver::Iterative);
-  EXPECT_EQ(plain.physics.iterations, 20);
-  const auto exact =
-      load_edited_scene(kScenes + "hip_medium.xml", physics_settings("solver=exact,step=0.5ms"));
-  EXPECT_EQ(exact.physics.solver, sim::PhysicsSettings::Solver::Exact);
-  EXPECT_DOUBLE_EQ(exact.physics.step, 0.0005);
+  EXPECT_EQ(plain.physics.solver, sim::PhysicsSettings::Solver::Exact);
+  EXPECT_DOUBLE_EQ(plain.physics.step, 0.001);
+  const auto iterative = load_edited_scene(kScenes + "hip_medium.xml",
+                                           physics_settings("solver=iterative,step=0.5ms"));
+  EXPECT_EQ(iterative.physics.solver, sim::PhysicsSettings::Solver::Iterative);
+  EXPECT_DOUBLE_EQ(iterative.physics.step, 0.0005);
 }
 
 TEST(PhysicsOption, BadSettingIsOneLineError) {

@@ -40,7 +40,8 @@ TEST(OdeSwingLeg, BothLawsTrackThePatternWithinTheMotorsLimits) {
     EXPECT_NEAR(adaptive.rms_error[i], lambda_era_adaptive[i], 0.015 * lambda_era_adaptive[i]) << i;
   }
   EXPECT_NEAR(pd.max_torque, 1.25, 0.02);
-  EXPECT_NEAR(adaptive.max_torque, 3.88, 0.06);
+  // Re-derived when the hanging NAO took the exact solver (issue 47): 3.88 at iterative 20.
+  EXPECT_NEAR(adaptive.max_torque, 3.81, 0.06);
 }
 
 TEST(OdeSwingLeg, RefusesScenesWithoutAOneMillisecondLoop) {
