@@ -251,7 +251,7 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
     RobotTarget& robot = target();
     observe({});
     const std::uint64_t dropped_before = robot.samples_dropped();
-    robot.advance(std::numeric_limits<std::uint64_t>::max(), [&] {
+    const std::uint64_t done = robot.advance(run_steps_left_.value_or(UINT64_MAX), [&] {
       ++paced_steps_;
       if (!after_step()) return running_ = false;
       const auto now = Clock::now();
@@ -262,6 +262,8 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
       return now - start < budget;
     });
     report_dropped(dropped_before);
+    if (run_steps_left_ && (*run_steps_left_ -= std::min(done, *run_steps_left_)) == 0)
+      pause_run();  // run_for's time is up
   } catch (const debug::ConnectionLost& e) {
     running_ = false;
     lost_connection(e.what());
@@ -291,7 +293,22 @@ void Interpreter::restart() {
 void Interpreter::pause_run() {
   if (!running_) return;
   running_ = false;
+  run_steps_left_.reset();
   out_ << "paused at t=" << target().time_text() << "\n";
+}
+
+void Interpreter::run_for(double seconds) {
+  refuse_while_running("run");
+  const std::uint64_t steps = steps_for(seconds);
+  start_background_run();
+  run_steps_left_ = steps;
+}
+
+void Interpreter::start_background_run() {
+  if (!target().loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
+  running_ = true;
+  run_steps_left_.reset();
+  start_pacing();
 }
 
 void Interpreter::refuse_while_running(const std::string& command) const {
@@ -316,9 +333,7 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "run") {
     if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));
     if (!interrupt_) throw Error("run: give the seconds to run in a script");
-    if (!target().loaded()) throw Error("no scene loaded (use: load <scene.xml>)");
-    running_ = true;
-    start_pacing();
+    start_background_run();
     out_ << "running from t=" << target().time_text()
          << (realtime_ ? " in real time (realtime off: as fast as possible;"
                        : " as fast as possible (realtime on: at the wall clock's pace;")

@@ -10,6 +10,7 @@
 #include <iosfwd>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,9 @@ class Interpreter {
   std::chrono::steady_clock::duration run_slice(std::chrono::steady_clock::duration budget);
   // Ctrl-C during a background run.
   void pause_run();
+  // `run <seconds>` as a background run that pauses itself after `seconds` of the target's time
+  // (the view's pages: one page's run never holds another's commands).
+  void run_for(double seconds);
   // `restart`: the target's scenario from its start, running again in the REPL.
   void restart();
   // The robot commands act on now: a connected remote robot, or the local simulation's.
@@ -100,6 +104,7 @@ class Interpreter {
   void start_pacing();  // realtime pacing counts from now
   std::chrono::steady_clock::time_point step_due();
   void refuse_while_running(const std::string& command) const;
+  void start_background_run();                // running_ from now, paced from now
   void report_dropped(std::uint64_t before);  // stream samples lost since `before`
   std::uint64_t steps_for(double seconds) const;
 
@@ -124,7 +129,8 @@ class Interpreter {
   std::atomic<bool>* interrupt_ = nullptr;
   bool quit_ = false;
   bool realtime_ = false;
-  bool running_ = false;  // a background run (interactive `run` without seconds)
+  bool running_ = false;  // a background run (interactive `run` without seconds, or run_for)
+  std::optional<std::uint64_t> run_steps_left_;  // run_for's steps still to go
   std::vector<std::string> script_stack_;
 
   std::vector<std::string> watch_keys_;

@@ -8,6 +8,7 @@
 #include "console/interpreter/values.hpp"
 #include "console/view/output_capture.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"  // parse_number
 
 namespace stride::view {
 
@@ -76,6 +77,7 @@ void ViewBridge::poll() {
   }
   // A paused remote robot's clock goes on: after the frame that shows the pause, the pages get
   // none until `run` follows it again (a command's reply still brings one).
+  answer_page_runs();
   const bool paused_remote = mode_ == "remote" && !interpreter_.running() && !last_running_;
   if (!paused_remote) send_frame_if_due(false);
   const auto now = std::chrono::steady_clock::now();
@@ -129,11 +131,52 @@ void ViewBridge::run_cmd(std::uint64_t client, const CmdRequest& c) {
         {{"ok", false}, {"output", ""}, {"error", word + ": this page's token is read-only"}});
     return server_.send(client, dump(reply));
   }
+  if (start_page_run(client, c)) return;
   std::string error;
   const std::string output = execute(c.line, error);
   reply.update({{"ok", error.empty()}, {"output", output}});
   if (!error.empty()) reply["error"] = error;
   server_.send(client, dump(reply));
+  send_frame_if_due(true);
+}
+
+// `run <seconds>` typed on a page runs in the background: that page is answered when the run
+// ends (or is paused), and every page's commands are served between its slices meanwhile.
+bool ViewBridge::start_page_run(std::uint64_t client, const CmdRequest& c) {
+  std::istringstream words(c.line);
+  std::string run, seconds, more;
+  words >> run >> seconds >> more;
+  if (run != "run" || seconds.empty() || !more.empty() || mode_ == "log") return false;
+  std::ostringstream captured;
+  try {
+    OutputCapture capture(out_, captured);
+    interpreter_.run_for(parse_number(seconds, "run: seconds"));
+  } catch (const Error& e) {
+    server_.send(client, dump({{"type", "reply"},
+                               {"id", c.id},
+                               {"ok", false},
+                               {"output", captured.str()},
+                               {"error", e.what()}}));
+    return true;
+  }
+  page_runs_.push_back({client, c.id, time() + parse_number(seconds, "run: seconds")});
+  return true;
+}
+
+// The pages whose `run <seconds>` has ended are told where it stopped.
+void ViewBridge::answer_page_runs() {
+  if (page_runs_.empty() || interpreter_.running()) return;
+  const double now = time();
+  const std::string at = "paused at t=" + interpreter_.target().time_text();
+  for (const PageRun& r : page_runs_) {
+    const bool early = now < r.until - 1e-9;
+    const Json reply = {{"type", "reply"},
+                        {"id", r.id},
+                        {"ok", true},
+                        {"output", at + (early ? " (paused before the run's end)\n" : "\n")}};
+    server_.send(r.client, dump(reply));
+  }
+  page_runs_.clear();
   send_frame_if_due(true);
 }
 

@@ -78,6 +78,14 @@ class ViewBridge {
   void sample();
   void send_frame_if_due(bool force);
   void check_events();  // fall, module faults
+  bool start_page_run(std::uint64_t client, const CmdRequest& c);
+  void answer_page_runs();
+  struct PageRun {
+    std::uint64_t client = 0;
+    std::int64_t id = 0;
+    double until = 0;  // the target's time the run ends at
+  };
+  std::vector<PageRun> page_runs_;  // pages waiting for their `run <seconds>` to end
 
   console::Interpreter& interpreter_;
   std::ostream& out_;
