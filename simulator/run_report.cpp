@@ -25,6 +25,17 @@ std::string solver_text(const PhysicsSettings& physics) {
   return o.str();
 }
 
+// The contact the figures were solved with: the scene's <contact> law, or the engine's own.
+std::string contact_text(const PhysicsSettings& physics) {
+  if (!physics.contact_law) return "engine's own";
+  const ContactLaw& law = *physics.contact_law;
+  std::ostringstream o;
+  o << "law k " << law.stiffness << " N/m c " << law.damping << " N s/m per "
+    << (law.per_body ? "body" : "point") << " mu " << law.friction << " "
+    << (law.cone == ContactLaw::Cone::Elliptic ? "elliptic" : "pyramid");
+  return o.str();
+}
+
 std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   JsonWriter j;
   j.begin_object();
@@ -32,6 +43,9 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   j.field("seed", static_cast<long long>(sim.scene().physics.seed));
   // Results depend on the solver setting (docs/solver-settings.md), so every report names it.
   j.field("solver", solver_text(sim.scene().physics));
+  j.field("engine", sim.world().engine_name());
+  j.field("step", sim.scene().physics.step);
+  j.field("contact", contact_text(sim.scene().physics));
   j.field("sim_time", sim.time());
   if (timing.interrupted)
     j.field("interrupted", true).field("requested_time", timing.requested_time);

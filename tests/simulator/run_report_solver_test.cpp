@@ -20,6 +20,18 @@ TEST(RunReportSolver, NamesTheSolverSetting) {
   EXPECT_NE(pinned.find("\"solver\":\"iterative 20 sor 1.5\""), std::string::npos) << pinned;
   const std::string exact = report_of(R"(<physics solver="exact"/>)");
   EXPECT_NE(exact.find("\"solver\":\"exact\""), std::string::npos) << exact;
+  EXPECT_NE(exact.find("\"engine\":\"ode\",\"step\":0.001,\"contact\":\"engine's own\""),
+            std::string::npos)
+      << exact;
+}
+
+TEST(RunReportSolver, NamesTheContactLaw) {
+  const std::string law = report_of(
+      R"(<physics solver="exact" step="0.5ms"/><contact stiffness="1e5" damping="1000"/>)");
+  EXPECT_NE(law.find("\"step\":5e-04,\"contact\":\"law k 100000 N/m c 1000 N s/m per body mu "
+                     "0.8 elliptic\""),
+            std::string::npos)
+      << law;
 }
 
 }  // namespace
