@@ -286,8 +286,9 @@ void Interpreter::restart() {
   if (!interrupt_) return;  // a script goes on with its own `run`
   running_ = true;
   start_pacing();
-  out_ << "running from t=" << target().time_text() << (realtime_ ? " in real time" : "")
-       << " (pause or Ctrl-C stops)\n";
+  // A robot restarts between its frames, after the reply: its clock is not yet the new one.
+  out_ << "running from " << (remote_ ? std::string("its start") : "t=" + target().time_text())
+       << (realtime_ ? " in real time" : "") << " (pause or Ctrl-C stops)\n";
 }
 
 void Interpreter::pause_run() {

@@ -322,6 +322,7 @@ std::uint64_t RemoteTarget::advance(std::uint64_t steps, const std::function<boo
     }
   } end{*this};
   const double patience = std::max(2.0, 20 * period_);
+  std::int64_t from = first;
   std::uint64_t done = 0, seen_dropped = 0;
   while (done < steps) {
     auto s = client_->next_sample(patience);
@@ -330,7 +331,8 @@ std::uint64_t RemoteTarget::advance(std::uint64_t steps, const std::function<boo
                   " s (is its loop running?)");
     dropped_ += s->dropped - std::min(s->dropped, seen_dropped);
     seen_dropped = s->dropped;
-    done = static_cast<std::uint64_t>(std::max<std::int64_t>(s->frame - first + 1, 0));
+    if (s->frame < from) from = s->frame - static_cast<std::int64_t>(done);  // it restarted
+    done = static_cast<std::uint64_t>(std::max<std::int64_t>(s->frame - from + 1, 0));
     current_ = std::move(s);
     if (after_step && !after_step()) break;
   }

@@ -261,6 +261,10 @@ void ServerThread::on_snapshot(std::unique_ptr<Snapshot> s) {
 }
 
 void ServerThread::stream(Snapshot& s) {
+  // A restarted controller counts its frames from 0 again: subscriptions start anew with it.
+  if (last_frame_ >= 0 && s.frame < last_frame_)
+    for (auto& [id, c] : clients_)
+      if (c->sub) c->sub->from = s.frame;
   const std::int64_t gap_first = last_frame_ + 1;
   const bool gap = last_frame_ >= 0 && s.frame > gap_first;
   last_frame_ = s.frame;

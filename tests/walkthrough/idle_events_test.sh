@@ -11,7 +11,7 @@ wait_for '^paused at t=0 until the first console connects$' 60 sim
 port=$(screen sim | sed -n 's/^debug server on 127\.0\.0\.1:\([0-9]*\) .*/\1/p' | head -n 1)
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30
-wait_for '^a console connected: running$' 30 sim
+wait_for 'a console connected: running' 30 sim
 sleep 2  # the robot walks a while first
 # Held hips and knees fell the walking robot a moment later, while the console only waits.
 type_line t 'set representation:JointRequest position[LHipPitch]=-1.45 position[RHipPitch]=-1.45 position[LKneePitch]=0 position[RKneePitch]=0'

@@ -19,7 +19,7 @@ upright() {
 lola_pair "$home/sim.sock" "--seconds 120 --realtime"
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30
-wait_for '^stride robot: a console connected: controller running$' 30 robot
+wait_for 'stride robot: a console connected: controller running' 30 robot
 sleep 1
 type_line t 'set representation:JointRequest position[LHipPitch]=-1.45 position[RHipPitch]=-1.45 position[LKneePitch]=0 position[RKneePitch]=0'
 wait_for 'event: FELL at t=[0-9.]+ s' 30

@@ -13,7 +13,7 @@ wait_for '^stride robot: standing, controller paused until the first console con
 sleep 4  # a console a few seconds late
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30
-wait_for '^stride robot: a console connected: controller running$' 30 robot
+wait_for 'stride robot: a console connected: controller running' 30 robot
 f1=$(value_of first representation:FrameInfo.frame)
 awk -v f="$f1" 'BEGIN {exit !(f >= 0 && f < 250)}' || fail "the controller ran before the console came (frame $f1)"
 sleep 3
@@ -31,7 +31,7 @@ wait_for '^stride robot: standing, controller paused' 60 robot
 sleep 5
 screen sim | grep -q '^scene hip_medium .* hash ' && fail "the lockstep simulation ended while the robot waited" sim
 open t2 "'$stride' --connect 127.0.0.1:$port"
-wait_for '^stride robot: a console connected: controller running$' 30 robot
+wait_for 'stride robot: a console connected: controller running' 30 robot
 wait_for '^stride> ?$' 30 t2
 tm send-keys -t t2 quit Enter
 echo "ok: the controller waited for the console (frame $f1, then $f2), the robot upright (pitch $pitch)"
