@@ -548,6 +548,13 @@ PhysicsAttributes parse_physics_setting(const std::string& text) {
   }
   if (attrs.empty()) throw Error(where + ": expected attribute=value[,attribute=value...]");
   parse_scene_text(xml + "/></scene>", where);  // each value checked as the scene's would be
+  // Iterations or over-relaxation name the iterative solver, also over a scene that states the
+  // exact one (as every walking scene does).
+  const auto named = [&](const char* a) {
+    return std::any_of(attrs.begin(), attrs.end(), [&](const auto& kv) { return kv.first == a; });
+  };
+  if ((named("iterations") || named("sor")) && !named("solver"))
+    attrs.insert(attrs.begin(), {"solver", "iterative"});
   return attrs;
 }
 

@@ -36,6 +36,20 @@ TEST(PhysicsSetting, SetsOnlyTheNamedAttributes) {
   EXPECT_EQ(exact.robots.size(), 1u);
 }
 
+TEST(PhysicsSetting, IterationsNameTheIterativeSolverOverAnExactScene) {
+  EXPECT_EQ(parse_physics_setting("iterations=40,sor=1.0"),
+            (PhysicsAttributes{{"solver", "iterative"}, {"iterations", "40"}, {"sor", "1.0"}}));
+  EXPECT_EQ(parse_physics_setting("sor=1.0"),
+            (PhysicsAttributes{{"solver", "iterative"}, {"sor", "1.0"}}));
+  EXPECT_EQ(parse_physics_setting("solver=exact,iterations=5"),
+            (PhysicsAttributes{{"solver", "exact"}, {"iterations", "5"}}));
+  EXPECT_EQ(parse_physics_setting("step=0.5ms"), (PhysicsAttributes{{"step", "0.5ms"}}));
+  const auto s = parse_scene_file(scene("scenes/walking/open_loop_medium.xml"),
+                                  parse_physics_setting("iterations=10"));
+  EXPECT_EQ(s.physics.solver, PhysicsSettings::Solver::Iterative);
+  EXPECT_EQ(s.physics.iterations, 10);
+}
+
 TEST(PhysicsSetting, AStepChangeRecomputesTheScenesContactSpring) {
   // soft_sole_exact states contact_stiffness / contact_damping: their ERP/CFM depend on the step.
   const std::string path = scene("scenes/experiments/soft_sole_exact/hip_medium.xml");
