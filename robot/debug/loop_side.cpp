@@ -187,7 +187,11 @@ bool LoopSide::publish(bool new_frame) {
     s->copied.reserve(kMaxSlots);
     x_.loop_allocations.fetch_add(1, std::memory_order_relaxed);
   }
-  s->generation = generation_;
+  if (s->generation != generation_) {  // a buffer of another catalogue: its copies' types checked
+    for (std::size_t i = 0; i < s->copies.size() && i < slots_.size(); ++i)
+      if (s->copies[i] && s->copies[i]->type() != slots_[i]->type()) s->copies[i].reset();
+    s->generation = generation_;
+  }
   s->frame = frame_info_->frame;
   s->time = frame_info_->time;
   s->new_frame = new_frame;
@@ -210,7 +214,7 @@ bool LoopSide::publish(bool new_frame) {
       if (i >= slots_.size()) break;
       auto& copy = s->copies[i];
       // A buffer's first use of a slot, or a re-plan changed its type: the only allocation.
-      if (!copy || copy->type() != slots_[i]->type()) {
+      if (!copy) {
         copy = slots_[i]->fresh();
         x_.loop_allocations.fetch_add(1, std::memory_order_relaxed);
       }
@@ -245,7 +249,8 @@ bool LoopSide::push_catalogue() {
 void LoopSide::service(Runtime& rt, bool new_frame) {
   if (&rt != runtime_ || rt.plan_generation() != plan_generation_) refresh_catalogue(rt);
   if (new_frame) {
-    x_.frames.fetch_add(1, std::memory_order_relaxed);
+    // The loop is its only writer: a plain store, not a locked add that waits for every store.
+    x_.frames.store(x_.frames.load(std::memory_order_relaxed) + 1, std::memory_order_release);
     x_.period.store(frame_info_->period, std::memory_order_relaxed);
     take_debug_output(rt);
     if (log_) write_log();
