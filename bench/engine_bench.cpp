@@ -30,11 +30,12 @@ std::vector<Setting> default_settings() {
       {"ode exact 1 ms, law (shipped)", "engine=ode,solver=exact"},
       {"mujoco newton 1 ms, law", "engine=mujoco,solver=exact"},
       {"mujoco newton 0.5 ms, law", "engine=mujoco,solver=exact,step=0.5ms"},
-      {"ode iterative 10 (standing scenes' default)", "engine=ode"},
+      {"ode iterative 10 (standing scenes' default)", "engine=ode,solver=iterative,iterations=10"},
       {"ode exact 1 ms (old study setting)", "engine=ode,solver=exact", false},
       {"mujoco newton 0.5 ms (old study setting)", "engine=mujoco,solver=exact,step=0.5ms", false},
       {"mujoco newton 1 ms (old)", "engine=mujoco,solver=exact", false},
-      {"ode iterative 20 (old default, artefact)", "engine=ode,iterations=20", false}};
+      {"ode iterative 20 (old default, artefact)", "engine=ode,solver=iterative,iterations=20",
+       false}};
 }
 
 stride::sim::SceneDescription load(const std::string& scene, const Setting& s,
