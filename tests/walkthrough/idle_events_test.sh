@@ -24,4 +24,5 @@ screen | sed '/^$/d' | tail -n 1 | grep -q '^stride> get robot\.na$' || fail "th
 tm send-keys -t t 'me' Enter
 wait_for '^nao' 30
 type_line t quit
+no_sanitizer_report
 echo "ok: the idle console was told of the fall at once, the typed line kept"

@@ -34,4 +34,5 @@ open t2 "'$stride' --connect 127.0.0.1:$port"
 wait_for 'stride robot: a console connected: controller running' 30 robot
 wait_for '^stride> ?$' 30 t2
 tm send-keys -t t2 quit Enter
+no_sanitizer_report
 echo "ok: the controller waited for the console (frame $f1, then $f2), the robot upright (pitch $pitch)"

@@ -30,4 +30,5 @@ type_line t pause
 t3=$(value_of third representation:FrameInfo.time)
 awk -v b="$t2" -v c="$t3" 'BEGIN {exit !(c < b)}' || fail "restart did not go back to the start ($t2, $t3)"
 type_line t quit
+no_sanitizer_report
 echo "ok: waited for the console (t=$t1), ran on (t=$t2), restarted (t=$t3)"

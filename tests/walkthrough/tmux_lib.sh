@@ -62,3 +62,12 @@ lola_pair() {
   wait_for 'debug server on 127\.0\.0\.1:[0-9]+' 60 robot
   port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
 }
+# no_sanitizer_report: fails when a window shows a sanitizer's report (the ASan + UBSan build).
+no_sanitizer_report() {
+  local w
+  sleep 1  # a console that just quit has written its leak check by now
+  for w in $(tm list-windows -t t -F '#W'); do
+    screen "$w" | grep -Eq 'Sanitizer|runtime error:' && fail "a sanitizer report in window $w" "$w"
+  done
+  return 0
+}
