@@ -88,6 +88,23 @@ TEST_P(ContactLaw, SlidingBlockDeceleratesAtMuG) {
   EXPECT_NEAR(sim->robot(0).body().link_com_velocity(0).y(), 0, 1e-6);  // straight on
 }
 
+#ifdef STRIDE_HAVE_MUJOCO
+// MuJoCo's friction rows sit in its friction block, which every one of its solvers solves: the
+// conjugate gradient and PGS (the speed settings) decelerate the sliding block at mu g too.
+TEST(ContactLawMujoco, EverySolverRealisesTheSlidingFriction) {
+  for (const std::string solver : {"solver=\"cg\"", "solver=\"iterative\" iterations=\"50\""}) {
+    auto sim = test::scene_from_text("<scene><physics engine=\"mujoco\" " + solver +
+                                     R"(/><contact stiffness="1e5" damping="1000" friction="0.5"/>
+      <robot name="b" urdf="block.urdf" xyz="0 0 0.0198"/>
+      <push robot="b" body="block" force="60 0 0" start="0.3" duration="0.1"/></scene>)");
+    sim->run_for(0.5);
+    const double v1 = forward_speed(*sim);
+    sim->run_for(0.3);
+    EXPECT_NEAR((v1 - forward_speed(*sim)) / 0.3, 0.5 * kG, 0.01 * 0.5 * kG) << solver;
+  }
+}
+#endif
+
 struct RampRun {
   double accel = 0;     // along the slope, downward, over the measured second
   double distance = 0;  // travelled down the slope in it
