@@ -148,6 +148,11 @@ std::vector<std::string> RemoteTarget::providers_available(const std::string& re
   return {};
 }
 
+RobotTarget::Providers RemoteTarget::providers() {
+  Listing l = list();
+  return {std::move(l.representations), std::move(l.providers), std::move(l.available)};
+}
+
 std::optional<std::vector<ModuleDeclaration>> RemoteTarget::module_declarations() {
   return debug::module_graph_of(call(request(Op::List))->fields());
 }

@@ -44,6 +44,7 @@ class RemoteTarget final : public RobotTarget {
   std::string provider_of(const std::string& representation) override;
   std::vector<std::string> providers_available(const std::string& representation) override;
   void swap_provider(const std::string& representation, const std::string& module) override;
+  Providers providers() override;
   std::optional<std::vector<ModuleDeclaration>> module_declarations() override;
   std::vector<std::pair<std::string, DebugSwitch>> debug_requests() override;
   void set_debug_request(const std::string& name, DebugSwitch state) override;

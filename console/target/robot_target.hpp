@@ -54,6 +54,14 @@ class RobotTarget {
   virtual std::string provider_of(const std::string& representation) = 0;
   virtual std::vector<std::string> providers_available(const std::string& representation) = 0;
   virtual void swap_provider(const std::string& representation, const std::string& module) = 0;
+  // Every representation with its provider and the modules that could provide it, in one look
+  // (a remote robot answers it in one `list`, not one per representation).
+  struct Providers {
+    std::vector<std::string> representations, providers;
+    std::vector<std::vector<std::string>> available;
+    std::string provider_of(const std::string& representation) const;  // "" if not there
+  };
+  virtual Providers providers();
   // What every module requires and provides; nullopt when the robot does not say (a debug
   // server from before the module graph was in its `list`).
   virtual std::optional<std::vector<ModuleDeclaration>> module_declarations() = 0;

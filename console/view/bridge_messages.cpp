@@ -41,12 +41,12 @@ sim::Simulation* local_simulation(console::Interpreter& in) {
 // Whether the walk's plan is what moves the robot: WalkPlan's provider is among the modules that
 // JointRequest's provider depends on (after `mr JointRequest Stand` a walk may still run and plan,
 // but its plan is not what the robot does, so it is not drawn).
-bool plan_drives_joints(console::RobotTarget& t) {
+bool plan_drives_joints(console::RobotTarget& t, const console::RobotTarget::Providers& p) {
   const auto decls = t.module_declarations();
   if (!decls) return true;  // an older robot does not say: drawn as before
-  const std::string planner = t.provider_of("WalkPlan");
+  const std::string planner = p.provider_of("WalkPlan");
   if (planner.empty() || planner.starts_with('(')) return false;  // built in: nobody plans
-  std::vector<std::string> todo{t.provider_of("JointRequest")};
+  std::vector<std::string> todo{p.provider_of("JointRequest")};
   std::set<std::string> seen;
   while (!todo.empty()) {
     const std::string m = todo.back();
@@ -56,7 +56,7 @@ bool plan_drives_joints(console::RobotTarget& t) {
     const auto it = std::find_if(decls->begin(), decls->end(),
                                  [&](const ModuleDeclaration& d) { return d.name == m; });
     if (it == decls->end()) continue;
-    for (const std::string& r : it->requires_) todo.push_back(t.provider_of(r));
+    for (const std::string& r : it->requires_) todo.push_back(p.provider_of(r));
   }
   return false;
 }
@@ -138,9 +138,10 @@ const model::RobotModel* ViewBridge::kinematic_model() {
 void ViewBridge::observe_keys() {
   std::vector<std::string> keys = watch_keys_;
   try {
-    const std::vector<std::string> reps = interpreter_.target().representations();
+    const console::RobotTarget::Providers p = interpreter_.target().providers();
+    const auto& reps = p.representations;
     walk_plan_ = std::find(reps.begin(), reps.end(), "WalkPlan") != reps.end() &&
-                 plan_drives_joints(interpreter_.target());
+                 plan_drives_joints(interpreter_.target(), p);
   } catch (const Error&) {
     walk_plan_ = false;  // no scene, or a robot that cannot say
   }
@@ -307,12 +308,14 @@ Json ViewBridge::tree() {
     const auto decls = t.module_declarations();
     const auto declared = by_name(decls);
     auto users = required_by(decls);
-    for (const std::string& r : t.representations()) {
-      const std::string provider = t.provider_of(r);
+    const console::RobotTarget::Providers all = t.providers();  // one look, not three per rep
+    for (std::size_t i = 0; i < all.representations.size(); ++i) {
+      const std::string& r = all.representations[i];
+      const std::string& provider = all.providers[i];
       if (!provider.empty()) provides[provider].push_back(r);
       Json rep = {{"name", r},
                   {"provider", provider},
-                  {"available", t.providers_available(r)},
+                  {"available", all.available[i]},
                   {"required_by", !decls              ? Json(nullptr)
                                   : users.contains(r) ? users[r]
                                                       : Json::array()}};

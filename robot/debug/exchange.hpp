@@ -56,18 +56,24 @@ struct Snapshot {
 void encode_copies(Snapshot& s);
 
 // What the loop knows and the server formats for `list` and `report`.
+// What `list` shows that changes only with the module plan: made once a plan, shared by every
+// list and report until the next one (building it takes tens of microseconds of the loop).
+struct RobotListing {
+  std::vector<std::string> representations, providers;
+  std::vector<std::vector<std::string>> available;
+  std::vector<std::string> parameter_modules, module_order;
+  std::vector<ModuleDeclaration> declarations;  // every registered module's requires/provides
+  std::vector<std::string> debug_requests;
+};
+
 struct RobotState {
   std::string robot;
   double period = 0;
   std::int64_t frame = 0;
   double time = 0;
-  std::vector<std::string> representations, providers;
-  std::vector<std::vector<std::string>> available;
-  std::vector<std::string> parameter_modules, module_order;
-  std::vector<std::int64_t> module_ns;  // ModuleTimes of the last frame, in module order
-  std::vector<ModuleDeclaration> declarations;  // every registered module's requires/provides
-  std::vector<std::string> debug_requests;
-  std::vector<std::string> debug_states;  // off, on, quiet
+  std::shared_ptr<const RobotListing> listing = std::make_shared<const RobotListing>();
+  std::vector<std::int64_t> module_ns;    // ModuleTimes of the last frame, in module order
+  std::vector<std::string> debug_states;  // off, on, quiet; as listing->debug_requests
   std::string log_file;                   // being recorded ("" none)
   std::uint64_t log_frames = 0;
 };

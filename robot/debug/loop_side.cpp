@@ -70,6 +70,13 @@ void LoopSide::refresh_catalogue(Runtime& rt) {
   pending_catalogue_ = std::move(c);
 }
 
+bool LoopSide::take_request(LoopRequest& in) {
+  if (!held_) return x_.requests.try_pop(in);
+  in = std::move(*held_);
+  held_.reset();
+  return true;
+}
+
 LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
   const Request& r = in.request;
   LoopReply out;
@@ -111,7 +118,13 @@ LoopReply LoopSide::apply(Runtime& rt, LoopRequest& in) {
         break;
       case Op::List:
       case Op::Report:
-        out.state = std::make_shared<RobotState>(robot_state(rt, robot_, log_file_, log_.get()));
+        if (const std::pair<const Runtime*, std::uint64_t> now{&rt, rt.plan_generation()};
+            !listing_ || listing_of_ != now) {  // once a plan
+          listing_ = robot_listing(rt);
+          listing_of_ = now;
+        }
+        out.state =
+            std::make_shared<RobotState>(robot_state(rt, robot_, listing_, log_file_, log_.get()));
         break;
       default:
         throw Error(std::string(op_name(r.op)) + " is not a loop request");
@@ -153,6 +166,7 @@ void LoopSide::detached(Runtime& runtime) {
   runtime_ = nullptr;  // a runtime made later at the same address still gets a fresh catalogue
   frame_info_ = nullptr;
   slots_.clear();
+  listing_.reset();
   if (log_) end_log("the robot's controller was replaced (reset or load)");
 }
 
@@ -260,9 +274,17 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
   // Room for every reply, a catalogue and a snapshot is made sure of before a request is taken.
   replies_.clear();
   LoopRequest in;
+  bool listed = false;  // a list or report this boundary: the next one waits for the next frame
   while (static_cast<int>(replies_.size()) < kRequestsPerFrame &&
-         x_.to_server.has_room(replies_.size() + 3) && x_.requests.try_pop(in))
+         x_.to_server.has_room(replies_.size() + 3) && take_request(in)) {
+    const bool lists = in.request.op == Op::List || in.request.op == Op::Report;
+    if (lists && listed) {
+      held_ = std::move(in);
+      break;
+    }
+    listed |= lists;
     replies_.push_back(apply(rt, in));
+  }
   const bool applied = !replies_.empty();
   if (applied && rt.plan_generation() != plan_generation_) {
     refresh_catalogue(rt);  // a re-plan may have put new representations on the blackboard
@@ -294,7 +316,22 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
   }
 }
 
-RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file,
+std::shared_ptr<const RobotListing> robot_listing(const Runtime& rt) {
+  auto l = std::make_shared<RobotListing>();
+  l->representations = rt.representation_names();
+  for (const auto& rep : l->representations) {
+    l->providers.push_back(rt.provider_of(rep));
+    l->available.push_back(rt.providers_available(rep));
+  }
+  l->parameter_modules = rt.parameter_modules();
+  l->module_order = rt.representation<ModuleTimes>().modules;
+  l->declarations = rt.module_declarations();
+  for (const auto& [name, state] : rt.debug_requests()) l->debug_requests.push_back(name);
+  return l;
+}
+
+RobotState robot_state(const Runtime& rt, const std::string& robot,
+                       std::shared_ptr<const RobotListing> listing, const std::string& log_file,
                        const LogWriter* log) {
   RobotState s;
   s.robot = robot;
@@ -302,20 +339,10 @@ RobotState robot_state(const Runtime& rt, const std::string& robot, const std::s
   s.period = info.period;
   s.frame = info.frame;
   s.time = info.time;
-  s.representations = rt.representation_names();
-  for (const auto& rep : s.representations) {
-    s.providers.push_back(rt.provider_of(rep));
-    s.available.push_back(rt.providers_available(rep));
-  }
-  s.parameter_modules = rt.parameter_modules();
-  const auto& times = rt.representation<ModuleTimes>();
-  s.module_order = times.modules;
-  s.module_ns = times.ns;
-  s.declarations = rt.module_declarations();
-  for (const auto& [name, state] : rt.debug_requests()) {
-    s.debug_requests.push_back(name);
+  s.listing = std::move(listing);
+  s.module_ns = rt.representation<ModuleTimes>().ns;
+  for (const auto& [name, state] : rt.debug_requests())
     s.debug_states.emplace_back(debug_switch_name(state));
-  }
   s.log_file = log ? log_file : "";
   s.log_frames = log ? log->frames_written() : 0;
   return s;

@@ -40,13 +40,14 @@ class LoopSide final : public FrameBoundary {
   void allow_restart() { restartable_ = true; }
   bool take_restart() { return std::exchange(restart_, false); }
 
-  static constexpr int kRequestsPerFrame = 16;
+  static constexpr int kRequestsPerFrame = 16;        // of which at most one list or report
   static constexpr std::size_t kMaxHeldLines = 1000;  // per client stream; more are counted
 
  private:
   void service(Runtime& rt, bool new_frame);
   void refresh_catalogue(Runtime& rt);
   LoopReply apply(Runtime& rt, LoopRequest& r);
+  bool take_request(LoopRequest& in);  // the held one first, then the ring's next
   bool wanted_changed();
   bool publish(bool new_frame);
   void encode_wanted(Snapshot& s);
@@ -75,16 +76,24 @@ class LoopSide final : public FrameBoundary {
   std::uint64_t log_client_ = 0;
   std::optional<LoopReply> pending_note_;  // why the log stopped, not yet taken by the ring
   std::vector<LoopReply> replies_;         // of this boundary, sent after its snapshot
-  DebugText pending_;                      // to go with the next snapshot streamed
+  // A list or report taken after another in the same boundary: each one builds the whole robot
+  // state, so they go one a frame and a burst (a view opening) never stretches one boundary.
+  std::optional<LoopRequest> held_;
+  std::shared_ptr<const RobotListing> listing_;  // made at a plan's first list or report
+  std::pair<const Runtime*, std::uint64_t> listing_of_{nullptr, 0};  // that runtime and plan
+  DebugText pending_;  // to go with the next snapshot streamed
   std::uint64_t pending_dropped_ = 0;
   bool keep_ = false;
   DebugText kept_;
   std::uint64_t kept_dropped_ = 0;
 };
 
-// Everything `list` and `report` show, read from the runtime between frames; `log` is the one
-// being recorded for a client (or null).
-RobotState robot_state(const Runtime& rt, const std::string& robot, const std::string& log_file,
+// What `list` shows that only a new module plan changes, read from the runtime between frames.
+std::shared_ptr<const RobotListing> robot_listing(const Runtime& rt);
+// Everything `list` and `report` show: `listing` (robot_listing of this plan) and what changes
+// every frame; `log` is the one being recorded for a client (or null).
+RobotState robot_state(const Runtime& rt, const std::string& robot,
+                       std::shared_ptr<const RobotListing> listing, const std::string& log_file,
                        const LogWriter* log);
 
 }  // namespace stride::debug

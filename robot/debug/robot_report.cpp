@@ -14,16 +14,16 @@ std::string robot_report_text(const RobotState& s, const ServerStats& st) {
   o << "robot " << s.robot << ": frame " << s.frame << ", time " << s.time << " s, period "
     << s.period << " s\n";
   o << "providers:";
-  for (std::size_t i = 0; i < s.representations.size(); ++i)
-    o << (i ? ", " : " ") << s.representations[i] << " <- "
-      << (s.providers[i].empty() ? "(built in)" : s.providers[i]);
+  for (std::size_t i = 0; i < s.listing->representations.size(); ++i)
+    o << (i ? ", " : " ") << s.listing->representations[i] << " <- "
+      << (s.listing->providers[i].empty() ? "(built in)" : s.listing->providers[i]);
   o << "\nmodule times (last frame, us):";
-  for (std::size_t i = 0; i < s.module_order.size() && i < s.module_ns.size(); ++i)
-    o << (i ? ", " : " ") << s.module_order[i] << " " << s.module_ns[i] / 1000.0;
+  for (std::size_t i = 0; i < s.listing->module_order.size() && i < s.module_ns.size(); ++i)
+    o << (i ? ", " : " ") << s.listing->module_order[i] << " " << s.module_ns[i] / 1000.0;
   o << "\ndebug requests:";
-  if (s.debug_requests.empty()) o << " none";
-  for (std::size_t i = 0; i < s.debug_requests.size(); ++i)
-    o << (i ? ", " : " ") << s.debug_requests[i] << " " << s.debug_states[i];
+  if (s.listing->debug_requests.empty()) o << " none";
+  for (std::size_t i = 0; i < s.listing->debug_requests.size(); ++i)
+    o << (i ? ", " : " ") << s.listing->debug_requests[i] << " " << s.debug_states[i];
   o << "\nlog: ";
   if (s.log_file.empty() && s.log_frames == 0)
     o << "none";
@@ -45,16 +45,16 @@ std::string robot_report_json(const RobotState& s, const ServerStats& st) {
   j.key("time").value(s.time);
   j.key("period").value(s.period);
   j.key("providers").begin_object();
-  for (std::size_t i = 0; i < s.representations.size(); ++i)
-    j.key(s.representations[i]).value(s.providers[i]);
+  for (std::size_t i = 0; i < s.listing->representations.size(); ++i)
+    j.key(s.listing->representations[i]).value(s.listing->providers[i]);
   j.end_object();
   j.key("module_ns").begin_object();
-  for (std::size_t i = 0; i < s.module_order.size() && i < s.module_ns.size(); ++i)
-    j.key(s.module_order[i]).value(static_cast<long long>(s.module_ns[i]));
+  for (std::size_t i = 0; i < s.listing->module_order.size() && i < s.module_ns.size(); ++i)
+    j.key(s.listing->module_order[i]).value(static_cast<long long>(s.module_ns[i]));
   j.end_object();
   j.key("debug_requests").begin_object();
-  for (std::size_t i = 0; i < s.debug_requests.size(); ++i)
-    j.key(s.debug_requests[i]).value(s.debug_states[i]);
+  for (std::size_t i = 0; i < s.listing->debug_requests.size(); ++i)
+    j.key(s.listing->debug_requests[i]).value(s.debug_states[i]);
   j.end_object();
   j.key("log").value(s.log_file);
   j.key("log_frames").value(static_cast<long long>(s.log_frames));
@@ -76,16 +76,16 @@ void write_list_fields(MapWriter& w, const RobotState& s) {
       .number("period", s.period)
       .integer("frame", s.frame)
       .number("time", s.time)
-      .texts("representations", s.representations)
-      .texts("providers", s.providers)
-      .text_lists("available", s.available)
-      .texts("modules", s.parameter_modules)
-      .texts("debug", s.debug_requests)
+      .texts("representations", s.listing->representations)
+      .texts("providers", s.listing->providers)
+      .text_lists("available", s.listing->available)
+      .texts("modules", s.listing->parameter_modules)
+      .texts("debug", s.listing->debug_requests)
       .texts("debug_state", s.debug_states)
-      .texts("order", s.module_order)
+      .texts("order", s.listing->module_order)
       .text("log", s.log_file)
       .unsigned_integer("log_frames", s.log_frames);
-  write_module_graph(w, s.declarations);
+  write_module_graph(w, s.listing->declarations);
 }
 
 }  // namespace stride::debug

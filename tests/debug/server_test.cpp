@@ -3,9 +3,12 @@
 // order, and the server's security and limits hold.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "robot/debug/debug_client.hpp"
 #include "robot/debug/log_directory.hpp"
@@ -112,6 +115,37 @@ TEST(DebugServer, ListNamesRepresentationsProvidersModulesAndDebugRequests) {
   const std::string report = c.call(request(Op::Report))->fields().text("text");
   EXPECT_NE(report.find("robot testbot: frame "), std::string::npos) << report;
   EXPECT_NE(report.find("Counter <- CounterFromFrame"), std::string::npos) << report;
+}
+
+// A list builds the robot's whole state on the loop: a burst of them (a view opening, several
+// consoles at once) is answered one a frame, so no single boundary does them all; a list right
+// after an mr names the new provider.
+TEST(DebugServer, ListsInABurstAreAnsweredOneAFrame) {
+  RobotLoop loop(loopback_options(), 0.02);
+  std::vector<std::unique_ptr<DebugClient>> clients;
+  for (int i = 0; i < 4; ++i) clients.push_back(std::make_unique<DebugClient>(loop.endpoint(), ""));
+  std::vector<std::int64_t> frames(clients.size());
+  std::atomic<int> ready{0};
+  std::vector<std::thread> asking;
+  for (std::size_t i = 0; i < clients.size(); ++i)
+    asking.emplace_back([&, i] {
+      ++ready;
+      while (ready < static_cast<int>(clients.size())) std::this_thread::yield();
+      frames[i] = clients[i]->call(request(Op::List))->fields().integer("frame");
+    });
+  for (auto& t : asking) t.join();
+  std::sort(frames.begin(), frames.end());
+  EXPECT_EQ(std::adjacent_find(frames.begin(), frames.end()), frames.end())
+      << "two lists answered at one boundary";
+  DebugClient& c = *clients[0];
+  Request mr = request(Op::Mr, "Counter");
+  mr.text = "CounterAfterStand";
+  c.send_only(std::move(mr));
+  const auto m = c.call(request(Op::List));
+  const auto reps = m->fields().texts("representations");
+  const auto at = std::find(reps.begin(), reps.end(), "Counter") - reps.begin();
+  ASSERT_LT(at, static_cast<long>(reps.size()));
+  EXPECT_EQ(m->fields().texts("providers")[at], "CounterAfterStand");
 }
 
 TEST(DebugServer, StreamsEveryFrameInOrderAndEveryKth) {
