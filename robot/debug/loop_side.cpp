@@ -194,13 +194,21 @@ bool LoopSide::wanted_changed() {
   return changed;
 }
 
-bool LoopSide::publish(bool new_frame) {
+std::unique_ptr<Snapshot> LoopSide::take_buffer() {
   std::unique_ptr<Snapshot> s;
-  if (!x_.spent.try_pop(s)) {
+  if (!ready_.empty()) {
+    s = std::move(ready_.back());
+    ready_.pop_back();
+  } else if (!x_.spent.try_pop(s)) {
     s = std::make_unique<Snapshot>();
     s->copied.reserve(kMaxSlots);
     x_.loop_allocations.fetch_add(1, std::memory_order_relaxed);
   }
+  return s;
+}
+
+bool LoopSide::publish(bool new_frame) {
+  std::unique_ptr<Snapshot> s = take_buffer();
   if (s->generation != generation_) {  // a buffer of another catalogue: its copies' types checked
     for (std::size_t i = 0; i < s->copies.size() && i < slots_.size(); ++i)
       if (s->copies[i] && s->copies[i]->type() != slots_[i]->type()) s->copies[i].reset();
@@ -246,7 +254,8 @@ bool LoopSide::publish(bool new_frame) {
     pending_.lines.swap(m.snapshot->debug_lines);
     pending_.stop.swap(m.snapshot->debug_stop);
   }
-  x_.spent.try_push(m.snapshot);  // keep the buffer if there is room; else it is freed here
+  // Kept for the next publish (never pushed into `spent`: the server thread is its one producer).
+  if (ready_.size() < kReadyBuffers) ready_.push_back(std::move(m.snapshot));
   return false;
 }
 

@@ -50,6 +50,7 @@ class LoopSide final : public FrameBoundary {
   bool take_request(LoopRequest& in);  // the held one first, then the ring's next
   bool wanted_changed();
   bool publish(bool new_frame);
+  std::unique_ptr<Snapshot> take_buffer();  // a ready one, a spent one, or a new one
   void encode_wanted(Snapshot& s);
   void take_debug_output(Runtime& rt);
   bool push_catalogue();
@@ -79,6 +80,9 @@ class LoopSide final : public FrameBoundary {
   // A list or report taken after another in the same boundary: each one builds the whole robot
   // state, so they go one a frame and a burst (a view opening) never stretches one boundary.
   std::optional<LoopRequest> held_;
+  // Buffers the server had no room for, kept for the next publish: `spent` has one producer.
+  static constexpr std::size_t kReadyBuffers = 3;
+  std::vector<std::unique_ptr<Snapshot>> ready_;
   std::shared_ptr<const RobotListing> listing_;  // made at a plan's first list or report
   std::pair<const Runtime*, std::uint64_t> listing_of_{nullptr, 0};  // that runtime and plan
   DebugText pending_;  // to go with the next snapshot streamed
