@@ -179,15 +179,35 @@ Json ViewBridge::robots_json() {
   try {
     const std::vector<double> angles = numbers(value(kAnglesKey));
     if (angles.size() != 2) return robots;
-    RobotFrame f = kinematic_robot_frame(*m, s ? s->robot(0).name() : interpreter_.target().name(),
-                                         named_numbers(value(kJointsKey)), angles[0], angles[1]);
+    const std::string name = s ? s->robot(0).name() : interpreter_.target().name();
+    const auto joints = named_numbers(value(kJointsKey));
+    const std::optional<Eigen::Isometry3d> torso = logged_torso();
+    RobotFrame f = torso ? posed_robot_frame(*m, name, joints, *torso)
+                         : kinematic_robot_frame(*m, name, joints, angles[0], angles[1]);
     f.fell = std::abs(angles[0]) > kFallTilt || std::abs(angles[1]) > kFallTilt;
-    add_walk_plan(f, *m, true);
+    add_walk_plan(f, *m, !torso);  // a logged pose is where it was; else it stands on its plan
     robots.push_back(robot_frame_json(f));
   } catch (const Error&) {
     // a robot without those representations is drawn without its body
   }
   return robots;
+}
+
+// The shown log frame's torso pose, where the log recorded one (a simulation's); else nothing.
+std::optional<Eigen::Isometry3d> ViewBridge::logged_torso() {
+  if (mode_ != "log" || !log_frame_) return std::nullopt;
+  try {
+    auto number = [&](const char* key) { return parse_number(value(key), key); };
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.translate(
+        Eigen::Vector3d(number("robot.torso.x"), number("robot.torso.y"), number("robot.torso.z")));
+    t.rotate(Eigen::AngleAxisd(number("robot.torso.yaw"), Eigen::Vector3d::UnitZ()) *
+             Eigen::AngleAxisd(number("robot.torso.pitch"), Eigen::Vector3d::UnitY()) *
+             Eigen::AngleAxisd(number("robot.torso.roll"), Eigen::Vector3d::UnitX()));
+    return t;
+  } catch (const Error&) {
+    return std::nullopt;  // a robot's log, or one recorded before poses were
+  }
 }
 
 // Each module's time in the last frame, ms (the runtime's ModuleTimes); {} if unknown.

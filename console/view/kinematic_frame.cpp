@@ -81,15 +81,41 @@ std::vector<std::string> strings(std::string_view text) {
   return out;
 }
 
-RobotFrame kinematic_robot_frame(const model::RobotModel& model, const std::string& name,
-                                 const std::map<std::string, double>& joints, double roll,
-                                 double pitch) {
+namespace {
+// Every link's pose in the torso's frame for the named joint angles (others at zero).
+std::vector<Eigen::Isometry3d> torso_frame_poses(const model::RobotModel& model,
+                                                 const std::map<std::string, double>& joints) {
   model::JointVector q = model::zero_joints(model);
   for (std::size_t j = 0; j < model.joints.size(); ++j)
     if (const auto it = joints.find(model.joints[j].name); it != joints.end()) q[j] = it->second;
   model::apply_mimic(model, q);
   std::vector<Eigen::Isometry3d> poses;
   model::link_poses(model, q, poses);
+  return poses;
+}
+}  // namespace
+
+RobotFrame posed_robot_frame(const model::RobotModel& model, const std::string& name,
+                             const std::map<std::string, double>& joints,
+                             const Eigen::Isometry3d& torso) {
+  const std::vector<Eigen::Isometry3d> poses = torso_frame_poses(model, joints);
+  RobotFrame f;
+  f.name = name;
+  std::vector<Eigen::Vector2d> ground;
+  for (std::size_t l = 0; l < model.links.size(); ++l) {
+    f.links.push_back(torso * poses[l]);
+    for (const auto& p : contact_points(model.links[l], f.links.back()))
+      if (p.z() < 0.005) ground.push_back(p.head<2>());  // within 5 mm of the floor
+  }
+  f.support = convex_hull(std::move(ground));
+  f.com = torso * model::centre_of_mass(model, poses);
+  return f;
+}
+
+RobotFrame kinematic_robot_frame(const model::RobotModel& model, const std::string& name,
+                                 const std::map<std::string, double>& joints, double roll,
+                                 double pitch) {
+  const std::vector<Eigen::Isometry3d> poses = torso_frame_poses(model, joints);
   Eigen::Isometry3d tilt = Eigen::Isometry3d::Identity();
   tilt.linear() = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
                    Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))

@@ -21,6 +21,11 @@ std::vector<double> numbers(std::string_view text);
 // ["A", "B"] -> {A, B} (names without commas or quotes inside).
 std::vector<std::string> strings(std::string_view text);
 
+// A robot whose torso's world pose is known (a simulation's log): its links placed from there.
+RobotFrame posed_robot_frame(const model::RobotModel& model, const std::string& name,
+                             const std::map<std::string, double>& joints,
+                             const Eigen::Isometry3d& torso);
+
 RobotFrame kinematic_robot_frame(const model::RobotModel& model, const std::string& name,
                                  const std::map<std::string, double>& joints, double roll,
                                  double pitch);

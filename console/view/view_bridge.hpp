@@ -72,6 +72,7 @@ class ViewBridge {
   void observe_keys();  // what a remote robot streams for the bridge
   // ZMP ref, footsteps; `sensed_only`: a robot without a world pose also stands on the plan.
   void add_walk_plan(RobotFrame& f, const model::RobotModel& model, bool sensed_only);
+  std::optional<Eigen::Isometry3d> logged_torso();  // log mode: the shown frame's, if recorded
   double time();
   std::uint64_t step_count();
   int steps_per_frame();

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The log player: scrubbed to frame k, the page shows the joint angles that `log goto k` puts on
-the blackboard (as `get` prints them in a separate console process); a click on a plotted point
+the blackboard (as `get` prints them in a separate console process), the body where the log put
+its torso (`get robot.torso.*`); a click on a plotted point
 shows that point's log frame."""
 import os
 import subprocess
@@ -28,6 +29,14 @@ def reference_angles(stride, path, k):
     out = subprocess.run([stride, "-c", f"log load {path}; log goto {k}; get {JOINTS}", SCENE],
                          cwd=SOURCE_DIR, check=True, timeout=30, capture_output=True, text=True).stdout
     return out.strip().splitlines()[-1]
+
+
+def reference_torso(stride, path, k):
+    """The logged torso position at frame k, as `get robot.torso.x|y|z` prints it."""
+    gets = "; ".join(f"get robot.torso.{a}" for a in "xyz")
+    out = subprocess.run([stride, "-c", f"log load {path}; log goto {k}; {gets}", SCENE],
+                         cwd=SOURCE_DIR, check=True, timeout=30, capture_output=True, text=True).stdout
+    return [float(v) for v in out.strip().splitlines()[-3:]]
 
 
 def scrub(d, k):
@@ -78,6 +87,12 @@ def test(stride, d):
             sel = f'#watches .watch[data-key="{JOINTS}"] .watch-value'
             wait_js(d, f"document.querySelector('{sel}').textContent === {expected!r}", 10,
                     f"the watched joint angles at frame {K} as `get` prints them ({expected[:60]}...)")
+            # A simulation's log holds the torso's world pose: the body is drawn where it was.
+            torso = reference_torso(stride, log, K)
+            drawn = d.execute_script("return strideView.frame.robots[0].links[0]")
+            err = max(abs(a - b) for a, b in zip(drawn[:3], torso))
+            check(err < 1e-6, f"torso drawn at {drawn[:3]}, logged at {torso} (frame {K})")
+            check(torso[0] > 0.1, f"the logged torso at x {torso[0]}: the walk did not move it")
             wait_js(d, "strideView.plots.plots[0].u.data[0].length >= 3", 10, "three samples plotted")
             target_t = d.execute_script(f"return strideView.store.t[strideView.store.logFrame.indexOf({K - 20})]")
             check(target_t is not None, f"no sample of frame {K - 20} in the plot's store")
