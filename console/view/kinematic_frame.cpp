@@ -93,53 +93,45 @@ std::vector<Eigen::Isometry3d> torso_frame_poses(const model::RobotModel& model,
   model::link_poses(model, q, poses);
   return poses;
 }
-}  // namespace
 
-RobotFrame posed_robot_frame(const model::RobotModel& model, const std::string& name,
-                             const std::map<std::string, double>& joints,
-                             const Eigen::Isometry3d& torso) {
-  const std::vector<Eigen::Isometry3d> poses = torso_frame_poses(model, joints);
+// The frame of a robot whose torso is at `torso`; what lies within 5 mm of the floor supports it.
+RobotFrame frame_at(const model::RobotModel& model, const std::string& name,
+                    const std::vector<Eigen::Isometry3d>& poses, const Eigen::Isometry3d& torso) {
   RobotFrame f;
   f.name = name;
   std::vector<Eigen::Vector2d> ground;
   for (std::size_t l = 0; l < model.links.size(); ++l) {
     f.links.push_back(torso * poses[l]);
     for (const auto& p : contact_points(model.links[l], f.links.back()))
-      if (p.z() < 0.005) ground.push_back(p.head<2>());  // within 5 mm of the floor
+      if (p.z() < 0.005) ground.push_back(p.head<2>());
   }
   f.support = convex_hull(std::move(ground));
   f.com = torso * model::centre_of_mass(model, poses);
   return f;
+}
+}  // namespace
+
+RobotFrame posed_robot_frame(const model::RobotModel& model, const std::string& name,
+                             const std::map<std::string, double>& joints,
+                             const Eigen::Isometry3d& torso) {
+  return frame_at(model, name, torso_frame_poses(model, joints), torso);
 }
 
 RobotFrame kinematic_robot_frame(const model::RobotModel& model, const std::string& name,
                                  const std::map<std::string, double>& joints, double roll,
                                  double pitch) {
   const std::vector<Eigen::Isometry3d> poses = torso_frame_poses(model, joints);
-  Eigen::Isometry3d tilt = Eigen::Isometry3d::Identity();
-  tilt.linear() = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-                   Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-                      .toRotationMatrix();
-  // The lowest point of the robot stands on the ground; feet within 5 mm of it support it.
+  Eigen::Isometry3d torso = Eigen::Isometry3d::Identity();
+  torso.linear() = (Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                    Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                       .toRotationMatrix();
+  // The lowest point of the tilted robot stands on the ground.
   double lowest = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<Eigen::Vector3d>> points(model.links.size());
-  for (std::size_t l = 0; l < model.links.size(); ++l) {
-    points[l] = contact_points(model.links[l], tilt * poses[l]);
-    for (const auto& p : points[l]) lowest = std::min(lowest, p.z());
-  }
-  Eigen::Isometry3d place = Eigen::Isometry3d::Identity();
-  place.translation().z() = -lowest;
-  RobotFrame f;
-  f.name = name;
-  std::vector<Eigen::Vector2d> ground;
-  for (std::size_t l = 0; l < model.links.size(); ++l) {
-    f.links.push_back(place * tilt * poses[l]);
-    for (const auto& p : points[l])
-      if (p.z() - lowest < 0.005) ground.push_back(p.head<2>());
-  }
-  f.support = convex_hull(std::move(ground));
-  f.com = place * tilt * model::centre_of_mass(model, poses);
-  return f;
+  for (std::size_t l = 0; l < model.links.size(); ++l)
+    for (const auto& p : contact_points(model.links[l], torso * poses[l]))
+      lowest = std::min(lowest, p.z());
+  torso.translation().z() = -lowest;
+  return frame_at(model, name, poses, torso);
 }
 
 }  // namespace stride::view

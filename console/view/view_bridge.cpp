@@ -148,9 +148,12 @@ bool ViewBridge::start_page_run(std::uint64_t client, const CmdRequest& c) {
   words >> run >> seconds >> more;
   if (run != "run" || seconds.empty() || !more.empty() || mode_ == "log") return false;
   std::ostringstream captured;
+  double until = 0;
   try {
     OutputCapture capture(out_, captured);
-    interpreter_.run_for(parse_number(seconds, "run: seconds"));
+    const double span = parse_number(seconds, "run: seconds");
+    interpreter_.run_for(span);
+    until = time() + span;
   } catch (const Error& e) {
     server_.send(client, dump({{"type", "reply"},
                                {"id", c.id},
@@ -159,7 +162,7 @@ bool ViewBridge::start_page_run(std::uint64_t client, const CmdRequest& c) {
                                {"error", e.what()}}));
     return true;
   }
-  page_runs_.push_back({client, c.id, time() + parse_number(seconds, "run: seconds")});
+  page_runs_.push_back({client, c.id, until});
   return true;
 }
 

@@ -1,7 +1,6 @@
 #pragma once
 // A type-erased reflected object (one representation instance, or one module's parameters):
 // what the blackboard, the logger and the console see.
-#include <concepts>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -21,10 +20,8 @@ class Slot {
   virtual void decode(std::string_view bytes) = 0;
   // A default-constructed object of the same type.
   virtual std::unique_ptr<Slot> fresh() const = 0;
-  // Copies the reflected fields (all that encode() writes) into `to`, a slot of the same type
-  // (type() equal), writing only the fields that differ: a copy another thread has read keeps its
-  // cache lines where nothing changed. Reuses `to`'s storage, so a warmed-up copy does not
-  // allocate.
+  // Copies the value into `to`, a slot of the same type (type() equal); reuses `to`'s storage, so
+  // a warmed-up copy does not allocate.
   virtual void copy_to(Slot& to) const = 0;
 
   Value value() const {
@@ -52,20 +49,6 @@ class Slot {
   }
 };
 
-// Assigns each reflected field of `from` to `to` where the two differ (or cannot be compared).
-template <class T>
-void copy_changed_fields(const T& from, T& to) {
-  for_each_field<T>([&](const auto& f) {
-    const auto& source = from.*(f.member);
-    auto& target = to.*(f.member);
-    if constexpr (std::equality_comparable<std::remove_cvref_t<decltype(source)>>) {
-      if (!(target == source)) target = source;
-    } else {
-      target = source;
-    }
-  });
-}
-
 template <class T>
 class SlotOf final : public Slot {
  public:
@@ -76,9 +59,7 @@ class SlotOf final : public Slot {
   void encode(ByteWriter& w) const override { stride::encode(w, value_); }
   void decode(std::string_view bytes) override { from_binary(value_, bytes); }
   std::unique_ptr<Slot> fresh() const override { return std::make_unique<SlotOf<T>>(); }
-  void copy_to(Slot& to) const override {
-    copy_changed_fields(value_, static_cast<SlotOf<T>&>(to).value_);
-  }
+  void copy_to(Slot& to) const override { static_cast<SlotOf<T>&>(to).value_ = value_; }
 };
 
 template <class T>

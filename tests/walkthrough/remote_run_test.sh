@@ -7,9 +7,7 @@ set -u
 stride=$1 src=$2
 . "$src/tests/walkthrough/tmux_lib.sh"
 
-open sim "'$stride' run scenes/walking/open_loop_medium.xml --seconds 120 --debug 127.0.0.1:0"
-wait_for '^paused at t=0 until the first console connects$' 60 sim
-port=$(screen sim | sed -n 's/^debug server on 127\.0\.0\.1:\([0-9]*\) .*/\1/p' | head -n 1)
+debug_run
 sleep 3  # a console a few seconds late
 open t "'$stride' --connect 127.0.0.1:$port"
 wait_for '^stride> ?$' 30

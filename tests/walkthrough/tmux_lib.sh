@@ -52,6 +52,13 @@ value_of() {
   done
   fail "no value after $1" "$w"
 }
+# debug_run: the medium walk served by `stride run --debug` (window sim), waiting paused for its
+# first console; sets $port to its debug server's.
+debug_run() {
+  open sim "'$stride' run scenes/walking/open_loop_medium.xml --seconds 120 --debug 127.0.0.1:0"
+  wait_for '^paused at t=0 until the first console connects$' 60 sim
+  port=$(screen sim | sed -n 's/^debug server on 127\.0\.0\.1:\([0-9]*\) .*/\1/p' | head -n 1)
+}
 # lola_pair <socket> <simulator flags> [robot flags]: the simulated NAO on LoLA (window sim) and
 # `stride robot --debug` driving it (window robot); sets $port to its debug server's.
 lola_pair() {
