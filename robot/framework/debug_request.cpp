@@ -11,6 +11,10 @@ std::string_view debug_switch_name(DebugSwitch s) {
 
 void DebugRequest::print(std::string_view text) const {
   if (!on() || channel_->quiet.test(index_)) return;
+  say(text);
+}
+
+void DebugRequest::say(std::string_view text) const {
   if (channel_->lines.size() >= kMaxDebugLines) {
     ++channel_->dropped_lines;
     return;

@@ -63,6 +63,9 @@ class DebugRequest {
   void print(std::string_view text) const;
   // A value the console reads as debug:<name>.<value> (get, watch, plot).
   void plot(std::string_view value, double v) const;
+  // A line for the console whether the request is on or not: what a module refuses or defers
+  // (said once, not every frame).
+  void say(std::string_view text) const;
   // Prints "a=1.5 b=-0.25" and plots each value: what most requests do every frame.
   void show(std::initializer_list<std::pair<std::string_view, double>> values) const;
   // Asks whoever runs the frames to pause after this one, saying why.

@@ -132,5 +132,67 @@ TEST(LegIk, ConflictingTargetsLeftWinsRightAnklePositionStillReached) {
   EXPECT_LT((reached_ankle - rt * up).norm(), 1e-9);
 }
 
+// Foot yaw relative to the torso (turning walks): opposite yaws of mirrored feet are reached
+// exactly by both legs through the one HipYawPitch, whose angle grows with the yaw (toes out:
+// negative).
+TEST(LegIk, MirroredFeetWithOppositeYawsAreBothReachedExactly) {
+  const Eigen::Vector3d left(0.02, 0.06, -0.30), right(0.02, -0.06, -0.30);
+  double previous_hyp = 1.0;
+  for (double yaw = -0.3; yaw <= 0.3001; yaw += 0.05) {
+    const LegsIkResult r = legs_ik_upright(left, yaw, right, -yaw);
+    EXPECT_TRUE(r.left.reachable && r.right.reachable) << yaw;
+    EXPECT_EQ(r.left.beyond_limits | r.right.beyond_limits, 0) << yaw;
+    EXPECT_LT(r.right.orientation_error, 1e-9) << yaw;
+    const Eigen::Isometry3d lf = leg_fk(Side::Left, r.left.q), rf = leg_fk(Side::Right, r.right.q);
+    EXPECT_LT((lf.translation() - left).norm(), 1e-9) << yaw;
+    EXPECT_LT((rf.translation() - right).norm(), 1e-9) << yaw;
+    EXPECT_NEAR(std::atan2(lf.linear()(1, 0), lf.linear()(0, 0)), yaw, 1e-9);
+    EXPECT_NEAR(std::atan2(rf.linear()(1, 0), rf.linear()(0, 0)), -yaw, 1e-9);
+    EXPECT_NEAR(lf.linear()(2, 2), 1.0, 1e-9) << "the sole stays flat";
+    EXPECT_LT(r.left.q[0], previous_hyp) << "HipYawPitch falls as the toes turn out";
+    previous_hyp = r.left.q[0];
+  }
+  EXPECT_NEAR(legs_ik_upright(left, 0.0, right, 0.0).left.q[0], 0.0, 1e-12);
+}
+
+// Feet apart in x and z (a step) with opposite yaws about the torso are not both reachable: the
+// HipYawPitch a yawed foot needs depends on where it is. legs_ik_turned finds the torso yaw that
+// makes them so.
+TEST(LegIk, TurnedFeetOfAStepAreReachedExactlyAtTheTorsoYawFound) {
+  const Eigen::Vector3d left(0.03, 0.05, -0.30), right(-0.025, -0.045, -0.28);
+  const LegsIkResult plain = legs_ik_upright(left, 0.2, right, -0.2);
+  EXPECT_GT(plain.right.orientation_error, 0.005);
+  for (double turn : {-0.4, -0.1, 0.0, 0.15, 0.3}) {
+    for (double heading : {0.0, 1.0, 3.1}) {  // the same step facing elsewhere, across +-pi
+      const Eigen::Matrix3d h = Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()).matrix();
+      const TurnedLegsIkResult r =
+          legs_ik_turned(h * left, heading + turn, h * right, heading - turn);
+      EXPECT_LT(r.yaw_error, 1e-10) << turn << " " << heading;
+      EXPECT_LT(r.legs.right.orientation_error, 1e-9) << turn << " " << heading;
+      EXPECT_NEAR(std::remainder(r.torso_yaw - heading, 2 * M_PI), 0.0, 0.05);
+      const Eigen::Matrix3d torso =
+          Eigen::AngleAxisd(r.torso_yaw, Eigen::Vector3d::UnitZ()).matrix();
+      const Eigen::Isometry3d lf = leg_fk(Side::Left, r.legs.left.q);
+      const Eigen::Isometry3d rf = leg_fk(Side::Right, r.legs.right.q);
+      EXPECT_LT((torso * lf.translation() - h * left).norm(), 1e-9);
+      EXPECT_LT((torso * rf.translation() - h * right).norm(), 1e-9);
+      const Eigen::Matrix3d lw = torso * lf.linear(), rw = torso * rf.linear();
+      EXPECT_NEAR(std::remainder(std::atan2(lw(1, 0), lw(0, 0)) - heading - turn, 2 * M_PI), 0,
+                  1e-9);
+      EXPECT_NEAR(std::remainder(std::atan2(rw(1, 0), rw(0, 0)) - heading + turn, 2 * M_PI), 0,
+                  1e-9);
+      EXPECT_NEAR(rw(2, 2), 1.0, 1e-9) << "the right sole stays flat";
+      EXPECT_DOUBLE_EQ(r.legs.left.q[0], r.legs.right.q[0]);
+    }
+  }
+}
+
+TEST(LegIk, TorsoYawBetweenIsTheMeanAlongTheShorterArc) {
+  EXPECT_NEAR(torso_yaw_between(0.2, -0.1), 0.05, 1e-15);
+  EXPECT_NEAR(torso_yaw_between(3.0, -3.0), M_PI, 1e-12);  // across +-pi, not through 0
+  EXPECT_NEAR(std::abs(torso_yaw_between(-3.1, 3.1)), M_PI, 1e-12);
+  EXPECT_NEAR(torso_yaw_between(1.0, 1.0), 1.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace stride::model

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "behaviours/stand/stand.hpp"
+#include "behaviours/walking/modules/request_walk.hpp"
 #include "behaviours/walking/modules/walk_parameters.hpp"
 #include "behaviours/walking/modules/walk_plan.hpp"
 #include "robot/representations/frame_info.hpp"
@@ -58,18 +60,18 @@ class PatternPlayer final : public Module {
         params_(c.parameters<WalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
         plan_(c.provide<WalkPlan>()),
-        zmp_debug_(c.debug_request("walking:zmp")) {}
+        zmp_debug_(c.debug_request("walking:zmp")),
+        refusal_(c.debug_request("walking:parameters")),
+        name_(c.module_name()) {}
 
   void update() override {
-    if (!pattern_ || !same_walk_parameters(params_, built_from_)) {
-      pattern_.emplace(walk_pattern_parameters(params_));  // throws naming the bad parameter
-      built_from_ = params_;
-    }
     if (!first_time_) {
       first_time_ = frame_.time;
       start_pose_ = joints_.position;
     }
-    const double t = pattern_time(frame_.time, *first_time_, params_.start_delay);
+    if (!pattern_ || !same_walk_parameters(params_, built_from_))
+      rebuild(pattern_time(frame_.time, *first_time_, built_from_.start_delay));
+    const double t = pattern_time(frame_.time, *first_time_, built_from_.start_delay);
     const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
     const walking::PatternSample sample = pattern_->sample(t_clamped);
     request_ = walking_request(walking::leg_joints(sample));
@@ -78,11 +80,26 @@ class PatternPlayer final : public Module {
     request_.ik_beyond_limit_frames = beyond_limit_frames_;
     show_zmp(sample);
     const double elapsed = frame_.time - *first_time_;
-    if (t >= 0 || elapsed >= params_.interpolation_time) return;
-    blend_from_pose(request_.position, start_pose_, elapsed, params_.interpolation_time);
+    if (t >= 0 || elapsed >= built_from_.interpolation_time) return;
+    blend_from_pose(request_.position, start_pose_, elapsed, built_from_.interpolation_time);
   }
 
  private:
+  // A new pattern before the walk starts; once it has started, the pattern is one whole walk
+  // that cannot change on the way (the waist would jump): the change is refused, said once.
+  void rebuild(double t) {
+    if (!pattern_ || t < 0.0) {
+      pattern_.emplace(walk_pattern_parameters(params_));  // throws naming the bad parameter
+      built_from_ = params_;
+      return;
+    }
+    if (refused_ && same_walk_parameters(params_, *refused_)) return;
+    refused_ = params_;
+    refusal_.say("refused: " + name_ +
+                 " plays the walk it started with to its end; its parameters change before the "
+                 "walk starts or after reset (RequestWalk changes speed while walking)");
+  }
+
   // The planned ZMP (Eq. 3.16) beside the measured CoP, both in the pattern's world frame; the
   // CoP is placed from the planned waist (an upright torso), so the gap also shows the lean.
   void show_zmp(const walking::PatternSample& s) const {
@@ -102,8 +119,11 @@ class PatternPlayer final : public Module {
   WalkingJointRequest& request_;
   WalkPlan& plan_;
   DebugRequest zmp_debug_;
+  DebugRequest refusal_;
+  std::string name_;
   std::optional<Pattern> pattern_;
   WalkParameters built_from_;
+  std::optional<WalkParameters> refused_;
   std::optional<double> first_time_;
   std::array<double, hal::kNumJoints> start_pose_{};
   std::int64_t beyond_limit_frames_ = 0;
@@ -114,6 +134,7 @@ class PatternPlayer final : public Module {
 void register_walking_modules(ModuleRegistry& registry) {
   registry.add<PatternPlayer<walking::StretchedKneePattern>>("PatternWalk");
   registry.add<PatternPlayer<walking::ConventionalPattern>>("ConventionalWalk");
+  register_request_walk_modules(registry);
 }
 
 }  // namespace stride::behaviours

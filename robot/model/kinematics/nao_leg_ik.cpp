@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/nao/joint_limits.hpp"
 #include "robot/nao/nao_dimensions.hpp"
 
@@ -256,18 +257,81 @@ LegIkResult leg_ik(Side side, const Eigen::Isometry3d& sole_in_torso) {
 
 LegIkResult leg_ik_with_hip_yaw_pitch(Side side, const Eigen::Isometry3d& sole_in_torso,
                                       double hip_yaw_pitch) {
-  return with_limits(side, solve_leg_with_hip_yaw_pitch(
-                               side, sole_in_torso, hip_yaw_pitch,
-                               {std::cos(hip_yaw_pitch), std::sin(hip_yaw_pitch)}));
+  return with_limits(
+      side, solve_leg_with_hip_yaw_pitch(side, sole_in_torso, hip_yaw_pitch,
+                                         {std::cos(hip_yaw_pitch), std::sin(hip_yaw_pitch)}));
 }
 
 LegsIkResult legs_ik(const Eigen::Isometry3d& left_sole, const Eigen::Isometry3d& right_sole) {
   LegsIkResult r;
   CosSin yaw_pitch;
   r.left = with_limits(Side::Left, solve_leg(Side::Left, left_sole, yaw_pitch));
-  r.right = with_limits(Side::Right, solve_leg_with_hip_yaw_pitch(Side::Right, right_sole,
-                                                                  r.left.q[0], yaw_pitch));
+  r.right = with_limits(
+      Side::Right, solve_leg_with_hip_yaw_pitch(Side::Right, right_sole, r.left.q[0], yaw_pitch));
   return r;
+}
+
+namespace {
+Eigen::Isometry3d flat_sole(const Eigen::Vector3d& at, double yaw) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  t.translation() = at;
+  return t;
+}
+}  // namespace
+
+LegsIkResult legs_ik_upright(const Eigen::Vector3d& left_sole, double left_yaw,
+                             const Eigen::Vector3d& right_sole, double right_yaw) {
+  return legs_ik(flat_sole(left_sole, left_yaw), flat_sole(right_sole, right_yaw));
+}
+
+double torso_yaw_between(double left_yaw, double right_yaw) {
+  const double d = std::remainder(right_yaw - left_yaw, 2 * std::numbers::pi);
+  return std::remainder(left_yaw + 0.5 * d, 2 * std::numbers::pi);
+}
+
+namespace {
+
+struct TurnedTry {
+  LegsIkResult legs;
+  double yaw_error = 0.0;  // signed: the right foot's reached yaw minus its wanted one
+};
+
+TurnedTry turned_at(double torso_yaw, const Eigen::Vector3d& left, double left_yaw,
+                    const Eigen::Vector3d& right, double right_yaw) {
+  const Eigen::Matrix3d to_torso =
+      Eigen::AngleAxisd(-torso_yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const double wanted = std::remainder(right_yaw - torso_yaw, 2 * std::numbers::pi);
+  TurnedTry t;
+  t.legs =
+      legs_ik_upright(to_torso * left, std::remainder(left_yaw - torso_yaw, 2 * std::numbers::pi),
+                      to_torso * right, wanted);
+  const Eigen::Matrix3d r = leg_fk(Side::Right, t.legs.right.q).linear();
+  t.yaw_error = std::remainder(std::atan2(r(1, 0), r(0, 0)) - wanted, 2 * std::numbers::pi);
+  return t;
+}
+
+}  // namespace
+
+TurnedLegsIkResult legs_ik_turned(const Eigen::Vector3d& left, double left_yaw,
+                                  const Eigen::Vector3d& right, double right_yaw) {
+  constexpr int kIterations = 12;
+  constexpr double kTolerance = 1e-12;  // rad
+  double y0 = torso_yaw_between(left_yaw, right_yaw), y1 = y0 + 1e-3;
+  TurnedTry t0 = turned_at(y0, left, left_yaw, right, right_yaw);
+  TurnedLegsIkResult best{t0.legs, y0, t0.yaw_error};
+  for (int i = 0; i < kIterations && std::abs(best.yaw_error) > kTolerance; ++i) {
+    const TurnedTry t1 = turned_at(y1, left, left_yaw, right, right_yaw);
+    if (std::abs(t1.yaw_error) < std::abs(best.yaw_error)) best = {t1.legs, y1, t1.yaw_error};
+    const double slope = (t1.yaw_error - t0.yaw_error) / (y1 - y0);
+    if (!(std::abs(slope) > 1e-9)) break;  // the yaw no longer moves the foot (out of reach)
+    y0 = y1;
+    t0 = t1;
+    y1 -= t1.yaw_error / slope;
+  }
+  best.torso_yaw = std::remainder(best.torso_yaw, 2 * std::numbers::pi);
+  best.yaw_error = std::abs(best.yaw_error);
+  return best;
 }
 
 }  // namespace stride::model

@@ -46,4 +46,27 @@ struct LegsIkResult {
 // Targets that agree on HipYawPitch are both reached exactly.
 LegsIkResult legs_ik(const Eigen::Isometry3d& left_sole, const Eigen::Isometry3d& right_sole);
 
+// Flat soles under an upright torso, each at a position (torso frame) and turned by a yaw about
+// the torso's z axis. The left leg is solved fully and the right one with its HipYawPitch
+// (legs_ik): opposite yaws of mirrored positions are both reached exactly, other pairs leave the
+// right foot's yaw off by its orientation_error (HipYawPitch depends on the foot's position too).
+LegsIkResult legs_ik_upright(const Eigen::Vector3d& left_sole, double left_yaw,
+                             const Eigen::Vector3d& right_sole, double right_yaw);
+
+struct TurnedLegsIkResult {
+  LegsIkResult legs;
+  double torso_yaw = 0.0;  // the upright torso's yaw at which both soles are reached
+  double yaw_error = 0.0;  // the right foot's yaw left over (rad), 0 when solved
+};
+
+// Flat soles given relative to the torso origin in axes turned with the world's (upright, yaw 0)
+// and by their yaws there: the one torso yaw at which the shared HipYawPitch reaches both
+// exactly, found by the secant method from the mean of the two yaws, and the angles there.
+// A turning walk's torso is yawed so; a turn beyond the hip's reach keeps the best yaw found.
+TurnedLegsIkResult legs_ik_turned(const Eigen::Vector3d& left_sole, double left_yaw,
+                                  const Eigen::Vector3d& right_sole, double right_yaw);
+
+// The mean of two yaws along the shorter arc, in (-pi, pi].
+double torso_yaw_between(double left_yaw, double right_yaw);
+
 }  // namespace stride::model

@@ -1,0 +1,153 @@
+#include "behaviours/walking/steps/online_walk.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "behaviours/walking/pattern/point_mass_zmp.hpp"
+#include "robot/core/error.hpp"
+#include "robot/model/kinematics/nao_leg_ik.hpp"
+
+namespace stride::walking {
+
+namespace {
+
+constexpr int kKeptSteps = 4;  // steps sampled at most one back and one ahead of the current
+
+double side_of(Foot f) {
+  return f == Foot::kLeft ? 1.0 : -1.0;
+}
+
+}  // namespace
+
+OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at)
+    : p_(p), limits_(limits), T_(p.T_step()), T_s_(p.T_s()), origin_(at) {
+  if (auto e = validation_error(p)) throw Error(*e);
+  if (const std::string e = limits_error(limits); !e.empty()) throw Error(e);
+}
+
+void OnlineWalk::advance(double t, bool walk, const StepVelocity& wanted) {
+  if (next_step_ == 0 && !walk) return;  // standing, asked to stand
+  while (!stopping() && decision_time(next_step_) <= t) plan(walk, wanted);
+}
+
+void OnlineWalk::plan(bool walk, const StepVelocity& wanted) {
+  const int k = next_step_;
+  wanted_in_range_ = walk ? within_range(wanted, limits_) : StepVelocity{};
+  const StepVelocity previous = k == 0 ? StepVelocity{} : step(k - 1).to();
+  const Pose2 start = k == 0 ? origin_ : step(k - 1).end();
+  StepKind kind = k == 0 ? StepKind::kFirst : StepKind::kMiddle;
+  if (!walk && k > 0 && can_stop_within_a_step(previous, limits_)) {
+    kind = StepKind::kLast;
+    granted_ = {};
+    steps_total_ = k + 1;
+  } else {
+    granted_ = next_step_velocity(previous, wanted_in_range_, limits_);
+  }
+  steps_.emplace_back(p_, k, kind, previous, granted_, start);
+  ++next_step_;
+  while (static_cast<int>(steps_.size()) > kKeptSteps) {
+    steps_.pop_front();
+    ++first_kept_;
+  }
+}
+
+const WaistStep& OnlineWalk::step(int k) const {
+  return steps_[std::clamp(k - first_kept_, 0, static_cast<int>(steps_.size()) - 1)];
+}
+
+Pose2 OnlineWalk::foothold(int j) const {
+  if (j <= 0 || next_step_ == 0) return origin_;
+  if (j >= next_step_) return step(next_step_ - 1).end();
+  return step(j).start();
+}
+
+double OnlineWalk::swing_start(int j) const {
+  return std::max(0.0, j * T_ - T_s_);
+}
+
+double OnlineWalk::swing_end(int j) const {
+  const double end = j * T_ + T_s_;
+  return stopping() ? std::min(steps_total_ * T_, end) : end;
+}
+
+FootPose OnlineWalk::foot_at(Foot f, int j) const {
+  const Pose2 h = foothold(j);
+  const Eigen::Vector2d p = point_in(h, 0.0, side_of(f) * p_.d_0);
+  return {{p.x(), p.y(), 0.0}, h.yaw};
+}
+
+int OnlineWalk::landings_after(double t, std::span<Landing> out) const {
+  int n = 0;
+  const int last = stopping() ? steps_total_ : next_step_ - 1;  // the last swing planned
+  for (int j = std::max(0, static_cast<int>(std::floor((t + T_s_) / T_)) - 1);
+       j <= last && n < static_cast<int>(out.size()); ++j) {
+    if (swing_end(j) <= t) continue;
+    const Foot f = Footsteps::swing_foot(j);
+    out[n++] = {f, foot_at(f, j + 1)};
+  }
+  return n;
+}
+
+FootPose OnlineWalk::foot(Foot f, double t) const {
+  const auto at = [&](int j) { return foot_at(f, j); };
+  int j = static_cast<int>(std::floor((t + T_s_) / T_));
+  if (stopping()) j = std::min(j, steps_total_);
+  if (j >= 0 && Footsteps::swing_foot(j) != f) --j;
+  if (j < 0) return at(0);
+  if (t >= swing_end(j)) return at(j + 1);
+  const FootPose from = at(j - 1), to = at(j + 1);
+  const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
+  // Eq. 3.11 along the line from one foothold to the next: the cycloid's share of the distance
+  // does not depend on the distance, so the yaw turns by the same share.
+  const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
+  const double share = (psi - std::sin(psi)) / (2.0 * std::numbers::pi);
+  FootPose out;
+  out.position = from.position + share * (to.position - from.position);
+  out.position.z() = cycloid(1.0, p_.H_foot, progress).y();
+  out.yaw = wrap_angle(from.yaw + share * wrap_angle(to.yaw - from.yaw));
+  return out;
+}
+
+SupportPhase OnlineWalk::support(double t) const {
+  if (!(t > 0.0) || ended(t)) return SupportPhase::kDouble;
+  const int k = static_cast<int>(std::floor(t / T_ + 0.5));  // nearest boundary
+  if (t < swing_start(k) || t >= swing_end(k)) return SupportPhase::kDouble;
+  return Footsteps::swing_foot(k) == Foot::kLeft ? SupportPhase::kRight : SupportPhase::kLeft;
+}
+
+WalkSample OnlineWalk::sample(double t) const {
+  WalkSample s;
+  s.t = t;
+  s.left = foot(Foot::kLeft, std::max(t, 0.0));
+  s.right = foot(Foot::kRight, std::max(t, 0.0));
+  s.support = support(t);
+  s.torso_yaw = model::torso_yaw_between(s.left.yaw, s.right.yaw);
+  if (next_step_ == 0 || !(t > 0.0) || ended(t)) {
+    s.frame = next_step_ == 0 || !(t > 0.0) ? origin_ : step(steps_total_ - 1).end();
+    s.waist = {s.frame.x, s.frame.y, p_.z_max};
+    s.zmp = s.waist.head<2>();
+    return s;
+  }
+  const int k = std::min(static_cast<int>(t / T_), next_step_ - 1);
+  const WaistStep& w = step(k);
+  const double u = t - k * T_;
+  const LocalMotion m = w.local(u);
+  s.step = k;
+  s.frame = w.frame_at(u);
+  s.velocity = {m.forward.v, m.sideways.v, m.heading.v};
+  const double yaw = s.frame.yaw, rate = m.heading.v;
+  const Eigen::Vector2d xy = point_in(s.frame, 0.0, m.sway.p);
+  // The walk frame's velocity and acceleration turned into the world, the sway's offset with it.
+  const Eigen::Vector2d v = rotated(yaw, m.forward.v - rate * m.sway.p, m.sideways.v + m.sway.v);
+  const Eigen::Vector2d a = rotated(
+      yaw, m.forward.a - rate * m.sideways.v - m.heading.a * m.sway.p - 2.0 * rate * m.sway.v,
+      m.sideways.a + rate * m.forward.v + m.sway.a - rate * rate * m.sway.p);
+  s.waist = {xy.x(), xy.y(), m.height.p};
+  s.waist_velocity = {v.x(), v.y(), m.height.v};
+  s.waist_acceleration = {a.x(), a.y(), m.height.a};
+  s.zmp = point_mass_zmp(s.waist, s.waist_acceleration, p_.gravity);
+  return s;
+}
+
+}  // namespace stride::walking

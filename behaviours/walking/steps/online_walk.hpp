@@ -1,0 +1,93 @@
+#pragma once
+// The thesis' walking pattern (Ch. 3) planned online, one step at a time, from a velocity request:
+// each waist step's speed, sideways speed and turn rate are chosen when the swing that ends it
+// lifts off (the step's footholds are then fixed), from the request at that moment within the
+// StepLimits. The walk starts from standing with a first step (Eqs. 3.6-3.8) and, once asked to
+// stand and slow enough, ends with a last step that brings the waist to rest between the feet.
+//
+// Footholds: at boundary j the support foot (left at odd j) stands d_0 beside the walk frame
+// F_j, turned with it (Eq. 3.12 on a path); swing j carries the other foot from foothold j-1 to
+// j+1 along the cycloid of Eq. 3.11, its yaw turning the same share of the way. The torso yaws
+// midway between the feet, the only orientation the shared HipYawPitch reaches with both feet.
+#include <deque>
+#include <span>
+
+#include <Eigen/Core>
+
+#include "behaviours/walking/pattern/footsteps.hpp"
+#include "behaviours/walking/steps/waist_step.hpp"
+
+namespace stride::walking {
+
+struct FootPose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // sole-frame origin, world
+  double yaw = 0.0;
+};
+
+// The pattern at one instant; frame: the world frame of the walk's origin (x forward, y left).
+struct WalkSample {
+  double t = 0.0;                                   // walk time
+  Pose2 frame;                                      // the walk frame (the plan's odometry)
+  StepVelocity velocity;                            // the walk frame's, in its own axes
+  Eigen::Vector3d waist = Eigen::Vector3d::Zero();  // torso origin
+  Eigen::Vector3d waist_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d waist_acceleration = Eigen::Vector3d::Zero();
+  double torso_yaw = 0.0;
+  FootPose left, right;
+  SupportPhase support = SupportPhase::kDouble;
+  Eigen::Vector2d zmp = Eigen::Vector2d::Zero();  // Eq. 3.16
+  int step = -1;                                  // waist step under way (-1 standing)
+};
+
+// Where a swing not yet ended will put its foot.
+struct Landing {
+  Foot foot = Foot::kLeft;
+  FootPose pose;
+};
+
+class OnlineWalk {
+ public:
+  // Standing at `at` (the walk frame; feet d_0 either side); p is validated (throws Error).
+  OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at);
+
+  // Plans every step whose lift-off is at or before walk time `t` from the request then:
+  // `walk` false asks to stop. Times only go forward.
+  void advance(double t, bool walk, const StepVelocity& wanted);
+  WalkSample sample(double t) const;
+  // The planned landings of the swings that end after `t`, soonest first, at most out.size().
+  int landings_after(double t, std::span<Landing> out) const;
+
+  // True once the last step has been planned, and after it ended.
+  bool stopping() const { return steps_total_ > 0; }
+  bool ended(double t) const { return stopping() && t >= steps_total_ * T_; }
+  // The velocity granted for the latest planned step (its end), and the request it answered
+  // before the limits (clamped to the range only).
+  const StepVelocity& granted() const { return granted_; }
+  const StepVelocity& wanted_in_range() const { return wanted_in_range_; }
+  int planned_steps() const { return next_step_; }
+  const PatternParameters& parameters() const { return p_; }
+  void set_limits(const StepLimits& limits) { limits_ = limits; }
+
+ private:
+  void plan(bool walk, const StepVelocity& wanted);
+  double decision_time(int k) const { return k == 0 ? 0.0 : k * T_ - T_s_; }
+  const WaistStep& step(int k) const;
+  Pose2 foothold(int j) const;
+  FootPose foot(Foot f, double t) const;
+  FootPose foot_at(Foot f, int j) const;  // standing at foothold j
+  double swing_start(int j) const;
+  double swing_end(int j) const;
+  SupportPhase support(double t) const;
+
+  PatternParameters p_;
+  StepLimits limits_;
+  double T_, T_s_;
+  Pose2 origin_;
+  std::deque<WaistStep> steps_;  // the last few planned steps
+  int first_kept_ = 0;           // index of steps_.front()
+  int next_step_ = 0;            // steps planned so far
+  int steps_total_ = 0;          // N once the last step is planned, else 0
+  StepVelocity granted_, wanted_in_range_;
+};
+
+}  // namespace stride::walking
