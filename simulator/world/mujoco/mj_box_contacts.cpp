@@ -51,11 +51,27 @@ void OdeBoxBoxContacts::place(dGeomID g, const mjModel* m, const mjData* d, int 
   dGeomSetRotation(g, r);
 }
 
+int OdeBoxBoxContacts::collide(const mjModel* m, const mjData* d, const mjContact& pair,
+                               int max_per_pair, mjContact* out) {
+  place(a_, m, d, pair.geom1);
+  place(b_, m, d, pair.geom2);
+  dContactGeom found[64];
+  const int n = dCollide(a_, b_, std::clamp(max_per_pair, 1, 64), found, sizeof(dContactGeom));
+  for (int k = 0; k < n; ++k) {
+    out[k] = pair;
+    out[k].dist = -found[k].depth;
+    for (int a = 0; a < 3; ++a) out[k].pos[a] = found[k].pos[a];
+    // ODE's normal pushes its first geom away from the second; MuJoCo's points from geom1 to
+    // geom2.
+    set_frame(out[k], -Eigen::Vector3d(found[k].normal[0], found[k].normal[1], found[k].normal[2]));
+  }
+  return n;
+}
+
 void OdeBoxBoxContacts::replace(const mjModel* m, mjData* d, int max_per_pair) {
   kept_.assign(d->contact, d->contact + d->ncon);
   d->ncon = 0;
-  dContactGeom found[64];
-  const int cap = std::clamp(max_per_pair, 1, 64);
+  mjContact found[64];
   for (std::size_t i = 0; i < kept_.size(); ++i) {
     const mjContact& c = kept_[i];
     if (!box_box(m, c)) {
@@ -66,21 +82,12 @@ void OdeBoxBoxContacts::replace(const mjModel* m, mjData* d, int max_per_pair) {
     if (i > 0 && box_box(m, kept_[i - 1]) && kept_[i - 1].geom1 == c.geom1 &&
         kept_[i - 1].geom2 == c.geom2)
       continue;
-    place(a_, m, d, c.geom1);
-    place(b_, m, d, c.geom2);
-    const int n = dCollide(a_, b_, cap, found, sizeof(dContactGeom));
+    const int n = collide(m, d, c, max_per_pair, found);
     if (d->ncon + n > m->nconmax)
       throw Error("physics: more contacts in one step than mujoco has room for (" +
                   std::to_string(m->nconmax) + "; bodies piled into each other)");
-    for (int k = 0; k < n; ++k) {
-      mjContact& out = d->contact[d->ncon++];
-      out = c;
-      out.dist = -found[k].depth;
-      for (int a = 0; a < 3; ++a) out.pos[a] = found[k].pos[a];
-      // ODE's normal pushes its first geom away from the second; MuJoCo's points from geom1 to
-      // geom2.
-      set_frame(out, -Eigen::Vector3d(found[k].normal[0], found[k].normal[1], found[k].normal[2]));
-    }
+    std::copy(found, found + n, d->contact + d->ncon);
+    d->ncon += n;
   }
 }
 

@@ -21,6 +21,11 @@ class OdeBoxBoxContacts {
   // After mj_collision: every box-box pair's contacts become ODE's (at most `max_per_pair`, the
   // ODE world's own cap), each keeping MuJoCo's parameters for the pair (friction, margin, dim).
   void replace(const mjModel* m, mjData* d, int max_per_pair);
+  // ODE's contacts between box geoms g1 and g2 at their sizes and poses in (m, d), at most
+  // `max_per_pair`, written into `out` (room for 64) as contacts like `pair` (MuJoCo's parameters
+  // for the pair) at ODE's points; returns how many.
+  int collide(const mjModel* m, const mjData* d, const mjContact& pair, int max_per_pair,
+              mjContact* out);
 
  private:
   void place(dGeomID g, const mjModel* m, const mjData* d, int geom);

@@ -13,25 +13,6 @@
 #include "simulator/world/mujoco/tile_blocks.hpp"
 
 namespace stride::sim {
-namespace {
-
-// Loads MJCF text through a one-file virtual file system: nothing touches the disk.
-mjModel* load_mjcf(const std::string& xml) {
-  auto vfs = std::make_unique<mjVFS>();
-  mj_defaultVFS(vfs.get());
-  const char* name = "stride_scene.xml";
-  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
-    throw Error("mujoco: cannot hold the scene in its virtual file system");
-  const int k = mj_findFileVFS(vfs.get(), name);
-  std::memcpy(vfs->filedata[k], xml.data(), xml.size());
-  char err[1000] = "";
-  mjModel* m = mj_loadXML(name, vfs.get(), err, sizeof err);
-  mj_deleteVFS(vfs.get());
-  if (!m) throw Error(std::string("mujoco: the scene does not compile: ") + err);
-  return m;
-}
-
-}  // namespace
 
 MjWorld::MjWorld(const PhysicsSettings& physics, const GroundSettings& ground)
     : PhysicsWorld(physics), ground_(ground) {
@@ -51,8 +32,13 @@ void MjWorld::add_static_box(const StaticBox& box) {
 
 void MjWorld::add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) {
   const std::vector<StaticBox> tiles = uneven_tiles(patch, seed);
-  for (auto& block : group_tiles(tiles, kTileBlockEdge)) tile_blocks_.push_back(std::move(block));
+  for (auto& block : group_tiles(tiles, kTileBlockEdge)) {
+    tile_blocks_.push_back(std::move(block));
+    block_patch_.push_back(static_cast<int>(patch_friction_.size()));
+  }
+  patch_friction_.push_back(patch.friction);
   static_geoms_ += static_cast<int>(tiles.size());
+  if (!tiles_in_model()) tile_contacts_.set_tiles(physics_, tile_blocks_, block_patch_);
   dirty_ = true;
 }
 
@@ -71,7 +57,10 @@ void MjWorld::fix_robot(int slot) {
 }
 
 void MjWorld::compile() {
-  mjModel* m = load_mjcf(write_mjcf(physics_, ground_, boxes_, tile_blocks_, robots_, geoms_));
+  const bool in_model = tiles_in_model();
+  mjModel* m = load_mjcf(
+      in_model ? write_mjcf(physics_, ground_, boxes_, tile_blocks_, robots_, geoms_)
+               : write_mjcf(physics_, ground_, boxes_, {}, robots_, geoms_, patch_friction_));
   if (m->ngeom != static_cast<int>(geoms_.size())) {
     mj_deleteModel(m);
     throw Error("mujoco: the compiled scene's geoms do not match the written ones");
@@ -109,6 +98,11 @@ void MjWorld::compile() {
     }
     if (lay.qpos_end == 0) lay.qpos_begin = lay.dof_begin = 0;
   }
+  probes_.clear();
+  if (!in_model)
+    for (std::size_t k = 0; k < patch_friction_.size(); ++k)
+      probes_.push_back(model_->body_geomadr[mj_name2id(
+          model_, mjOBJ_BODY, ("tile_probe" + std::to_string(k)).c_str())]);
   motors_.assign(model_->nv, {});
   mj_forward(model_, data_);
   dirty_ = false;
@@ -150,6 +144,7 @@ void MjWorld::step1_with_law() {
   mj_factorM(model_, data_);
   mj_collision(model_, data_);
   box_contacts_.replace(model_, data_, physics_.max_contacts);
+  tile_contacts_.add(model_, data_, probes_, box_contacts_, physics_.max_contacts);
   orient_law_contacts(data_);
   mj_makeConstraint(model_, data_);
   mj_transmission(model_, data_);

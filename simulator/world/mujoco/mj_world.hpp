@@ -11,6 +11,7 @@
 
 #include "simulator/world/mujoco/mj_box_contacts.hpp"
 #include "simulator/world/mujoco/mj_law_friction.hpp"
+#include "simulator/world/mujoco/mj_tile_contacts.hpp"
 #include "simulator/world/mujoco/mjcf_writer.hpp"
 #include "simulator/world/physics_world.hpp"
 
@@ -39,8 +40,13 @@ class MjWorld : public PhysicsWorld {
 
   const char* engine_name() const override { return "mujoco"; }
   void add_static_box(const StaticBox& box) override;
-  // The tiles in static bodies of nearby tiles (tile_blocks.hpp), not as world geoms.
+  // The tiles in static bodies of nearby tiles (tile_blocks.hpp), not as world geoms; under a
+  // contact law outside the model altogether (mj_tile_contacts.hpp).
   void add_uneven_patch(const UnevenPatch& patch, std::uint64_t seed) override;
+  // Under a contact law, keeps the tiles in the model as without one: the reference the tile
+  // contacts are tested and timed against. Before any patch is added.
+  void hold_tiles_in_model() { tiles_in_model_ = true; }
+  bool tiles_in_model() const { return tiles_in_model_ || !physics_.contact_law; }
   std::unique_ptr<RobotBody> add_robot(const model::RobotModel& model, int robot_index,
                                        const Eigen::Isometry3d& root_pose,
                                        const model::JointVector& q) override;
@@ -75,6 +81,11 @@ class MjWorld : public PhysicsWorld {
   std::vector<int> points_per_body_;    // the contact law's split, by mjModel body id
   LawFrictionRows friction_rows_;       // the contact law's friction rows this step
   OdeBoxBoxContacts box_contacts_;      // the contact law's box-box contacts, ODE's
+  MjTileContacts tile_contacts_;        // the law's contacts with tiles out of the model
+  std::vector<int> block_patch_;        // each tile block's patch
+  std::vector<double> patch_friction_;  // each patch's friction, for its probe geom
+  std::vector<int> probes_;             // each patch's probe geom (tiles out of the model)
+  bool tiles_in_model_ = false;
   std::vector<mjtNum> refreshed_qpos_;  // the positions the last step's refresh posed bodies at
   int static_geoms_ = 0;
   bool dirty_ = true;

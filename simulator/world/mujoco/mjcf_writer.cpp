@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <sstream>
 
+#include "robot/core/error.hpp"
 #include "simulator/world/contact_law.hpp"
 #include "simulator/world/mujoco/tile_blocks.hpp"
 
@@ -128,6 +131,21 @@ void write_tile_blocks(std::ostream& out, const std::vector<std::vector<StaticBo
 
 }  // namespace
 
+mjModel* load_mjcf(const std::string& xml) {
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  const char* name = "stride_scene.xml";
+  if (mj_makeEmptyFileVFS(vfs.get(), name, static_cast<int>(xml.size())) != 0)
+    throw Error("mujoco: cannot hold the scene in its virtual file system");
+  const int k = mj_findFileVFS(vfs.get(), name);
+  std::memcpy(vfs->filedata[k], xml.data(), xml.size());
+  char err[1000] = "";
+  mjModel* m = mj_loadXML(name, vfs.get(), err, sizeof err);
+  mj_deleteVFS(vfs.get());
+  if (!m) throw Error(std::string("mujoco: the scene does not compile: ") + err);
+  return m;
+}
+
 std::string mjcf_link_name(int r, int l) {
   return "r" + std::to_string(r) + "_l" + std::to_string(l);
 }
@@ -139,7 +157,8 @@ std::string mjcf_joint_name(int r, int j) {
 std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
                        const std::vector<StaticBox>& boxes,
                        const std::vector<std::vector<StaticBox>>& tile_blocks,
-                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms) {
+                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms,
+                       const std::vector<double>& tile_probes) {
   geoms.clear();
   const double robot_friction = robot_geom_friction(physics);
   std::ostringstream out;
@@ -171,6 +190,11 @@ std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& gro
   for (MjcfRobot r : robots) {
     r.friction = robot_friction;
     write_link(out, r, r.model->root_link, r.root_pose, geoms);
+  }
+  for (std::size_t k = 0; k < tile_probes.size(); ++k) {
+    out << "<body name=\"tile_probe" << k << "\"><geom type=\"box\" size=\"0.5 0.5 0.5\" "
+        << "contype=\"0\" conaffinity=\"0\"" << friction_attr(tile_probes[k]) << "/></body>\n";
+    geoms.push_back({-1, -1, tile_probes[k]});
   }
   write_tile_blocks(out, tile_blocks, robot_friction, geoms);
   out << "</mujoco>\n";

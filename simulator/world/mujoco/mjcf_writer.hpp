@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <mujoco/mujoco.h>
 #include <Eigen/Geometry>
 
 #include "robot/model/robot_model.hpp"
@@ -26,11 +27,18 @@ struct MjcfRobot {
 };
 
 // The MJCF document, and in `geoms` the GeomInfo of every geom in MuJoCo's geom order. Each
-// of `tile_blocks` becomes one static body holding its boxes (tile_blocks.hpp).
+// of `tile_blocks` becomes one static body holding its boxes (tile_blocks.hpp); each of
+// `tile_probes` (a patch's friction) a static body after the robots holding one box that collides
+// with nothing (mj_tile_contacts.hpp).
 std::string write_mjcf(const PhysicsSettings& physics, const GroundSettings& ground,
                        const std::vector<StaticBox>& boxes,
                        const std::vector<std::vector<StaticBox>>& tile_blocks,
-                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms);
+                       const std::vector<MjcfRobot>& robots, std::vector<GeomInfo>& geoms,
+                       const std::vector<double>& tile_probes = {});
+
+// The compiled model of MJCF text, loaded through a one-file virtual file system (nothing touches
+// the disk); throws stride::Error with MuJoCo's message if it does not compile.
+mjModel* load_mjcf(const std::string& xml);
 
 // MJCF names of robot `r`'s link `l` and joint `j` bodies/joints.
 std::string mjcf_link_name(int r, int l);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace stride::sim {
 namespace {
@@ -11,15 +12,27 @@ constexpr int kMaxCellsPerGeom = 64;  // larger geoms are tested against everyth
 
 StaticGeomGrid::StaticGeomGrid(dSpaceID space) {
   const int n = dSpaceGetNumGeoms(space);
-  double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
-  double smallest = INFINITY;
-  std::vector<bool> bounded(n);
   for (int i = 0; i < n; ++i) {
     dGeomID g = dSpaceGetGeom(space, i);
     Aabb b;
     dGeomGetAABB(g, b.data());
     geoms_.push_back(g);
     boxes_.push_back(b);
+  }
+  index();
+}
+
+StaticGeomGrid::StaticGeomGrid(std::vector<Aabb> boxes) : boxes_(std::move(boxes)) {
+  index();
+}
+
+void StaticGeomGrid::index() {
+  const int n = size();
+  double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
+  double smallest = INFINITY;
+  std::vector<bool> bounded(n);
+  for (int i = 0; i < n; ++i) {
+    const Aabb& b = boxes_[i];
     bounded[i] =
         std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
     if (!bounded[i]) continue;
@@ -68,6 +81,12 @@ bool StaticGeomGrid::cell_range(const dReal* box, int& x0, int& x1, int& y0, int
 
 void StaticGeomGrid::overlapping(const dReal* box, std::vector<dGeomID>& out) const {
   out.clear();
+  overlapping_ranks(box, ranks_);
+  for (int i : ranks_) out.push_back(geoms_[i]);
+}
+
+void StaticGeomGrid::overlapping_ranks(const dReal* box, std::vector<int>& out) const {
+  out.clear();
   scratch_.assign(everywhere_.begin(), everywhere_.end());
   int x0, x1, y0, y1;
   if (cell_range(box, x0, x1, y0, y1))
@@ -79,7 +98,7 @@ void StaticGeomGrid::overlapping(const dReal* box, std::vector<dGeomID>& out) co
   std::sort(scratch_.begin(), scratch_.end());
   scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
   for (int i : scratch_)
-    if (aabbs_overlap(boxes_[i].data(), box)) out.push_back(geoms_[i]);
+    if (aabbs_overlap(boxes_[i].data(), box)) out.push_back(i);
 }
 
 }  // namespace stride::sim

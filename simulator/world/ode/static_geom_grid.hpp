@@ -21,12 +21,17 @@ class StaticGeomGrid {
  public:
   // Indexes the geoms of `space` (none may move afterwards) in its list order.
   explicit StaticGeomGrid(dSpaceID space);
+  // Indexes bare boxes, by their ranks in `boxes` (no geoms: for another engine's static shapes).
+  explicit StaticGeomGrid(std::vector<Aabb> boxes);
 
-  int size() const { return static_cast<int>(geoms_.size()); }
+  int size() const { return static_cast<int>(boxes_.size()); }
   // The static geoms whose boxes overlap `box`, in the space's list order.
   void overlapping(const dReal* box, std::vector<dGeomID>& out) const;
+  // The ranks of the boxes overlapping `box`, ascending.
+  void overlapping_ranks(const dReal* box, std::vector<int>& out) const;
 
  private:
+  void index();
   bool cell_range(const dReal* box, int& x0, int& x1, int& y0, int& y1) const;
 
   std::vector<dGeomID> geoms_;  // list order
@@ -35,7 +40,7 @@ class StaticGeomGrid {
   std::vector<std::vector<int>> cells_;  // geom ranks per cell, ascending
   double origin_x_ = 0, origin_y_ = 0, cell_ = 1;
   int nx_ = 0, ny_ = 0;
-  mutable std::vector<int> scratch_;
+  mutable std::vector<int> scratch_, ranks_;
 };
 
 }  // namespace stride::sim
