@@ -41,6 +41,10 @@ void StaticGeomGrid::index() {
     min_y = std::min(min_y, double(b[2]));
     max_y = std::max(max_y, double(b[3]));
     smallest = std::min(smallest, std::max(double(b[1] - b[0]), double(b[3] - b[2])));
+    for (int k = 0; k < 6; k += 2) {
+      bounds_[k] = std::min(bounds_[k], b[k]);
+      bounds_[k + 1] = std::max(bounds_[k + 1], b[k + 1]);
+    }
   }
   if (std::isfinite(min_x)) {
     // Cells about twice the smallest geom, but never more than kMaxCellsPerAxis a side.
@@ -87,6 +91,8 @@ void StaticGeomGrid::overlapping(const dReal* box, std::vector<dGeomID>& out) co
 
 void StaticGeomGrid::overlapping_ranks(const dReal* box, std::vector<int>& out) const {
   out.clear();
+  // A robot's upper body is far above a floor's tiles: nothing to visit.
+  if (everywhere_.empty() && !aabbs_overlap(bounds_.data(), box)) return;
   scratch_.assign(everywhere_.begin(), everywhere_.end());
   int x0, x1, y0, y1;
   if (cell_range(box, x0, x1, y0, y1))

@@ -4,6 +4,7 @@
 // static geom (thousands on an uneven floor); the grid visits only the nearby ones, in the static
 // space's own order, so the contacts and hence the simulation stay bit-identical.
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <ode/ode.h>
@@ -36,7 +37,8 @@ class StaticGeomGrid {
 
   std::vector<dGeomID> geoms_;  // list order
   std::vector<Aabb> boxes_;
-  std::vector<int> everywhere_;          // unbounded or huge geoms: always candidates
+  std::vector<int> everywhere_;  // unbounded or huge geoms: always candidates
+  Aabb bounds_ = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};  // of the rest
   std::vector<std::vector<int>> cells_;  // geom ranks per cell, ascending
   double origin_x_ = 0, origin_y_ = 0, cell_ = 1;
   int nx_ = 0, ny_ = 0;
