@@ -15,11 +15,24 @@ inline double robot_geom_friction(const PhysicsSettings& p) {
   return p.contact_law ? p.contact_law->friction : 0.8;
 }
 
-// One of a body's `points` contact points against the static scene at step h (a robot-robot
-// point, or any point of a per-point law, takes the whole spring: points = 1).
-inline ContactSoftness law_point_softness(const ContactLaw& law, int points, double h) {
-  const double n = law.per_body ? std::max(points, 1) : 1;
-  return contact_softness(law.stiffness / n, law.damping / n, h);
+// A body's contact points against the static scene in one step: how many, and their summed depth.
+struct LawBodyLoad {
+  int points = 0;
+  double depth = 0;  // m, the points' depths (negative ones as 0) added up
+};
+
+// A point's share of its body's law under per="body": its depth over the body's (with a micrometre
+// each, so level points share alike), so a point that appears at the surface takes almost nothing
+// from the others and the body's force does not jump with the collider's point count; 1 per point.
+inline double law_point_share(const ContactLaw& law, double depth, const LawBodyLoad& body) {
+  if (!law.per_body || body.points <= 1) return 1;
+  constexpr double kLevel = 1e-6;
+  return (std::max(depth, 0.0) + kLevel) / (body.depth + body.points * kLevel);
+}
+
+// The spring and damper of a point that carries `share` of the law, at step h.
+inline ContactSoftness law_point_softness(const ContactLaw& law, double share, double h) {
+  return contact_softness(law.stiffness * share, law.damping * share, h);
 }
 
 // The pyramid's first friction axis: world x in the contact plane (world y where the normal lies

@@ -26,7 +26,8 @@ WalkSummary walk(const std::string& scene) {
 }
 
 // fsr_steps: the pattern takes 61; the FSR count may split or miss a landing. The hip walk's 58
-// was re-derived at the scenes' converged setting (issue 47; 61 at the old iterative 20).
+// was re-derived at the scenes' converged setting (issue 47; 61 at the old iterative 20), the
+// ankle walk's 58 when the law's per-body split went by depth (61 with the split by count).
 void expect_stable_walk(const WalkSummary& s, int fsr_steps) {
   EXPECT_FALSE(s.fell);
   EXPECT_NEAR(s.steps, fsr_steps, 2);
@@ -40,7 +41,7 @@ TEST(PostureWalk, HipStrategyMediumSpeedUnevenFloorStaysUpFor15Seconds) {
 }
 
 TEST(PostureWalk, AnkleStrategyMediumSpeedUnevenFloorStaysUpFor15Seconds) {
-  expect_stable_walk(walk("ankle_medium"), 61);
+  expect_stable_walk(walk("ankle_medium"), 58);
 }
 
 int run(std::vector<std::string> args, std::string& err_text) {

@@ -37,17 +37,20 @@ void orient_law_contacts(mjData* d) {
 }
 
 void impose_law_rows(const mjModel* m, mjData* d, const ContactLaw& law,
-                     std::vector<int>& points_per_body) {
+                     std::vector<LawBodyLoad>& load_of_body) {
   const double h = m->opt.timestep;
-  points_per_body.assign(m->nbody, 0);
+  load_of_body.assign(m->nbody, LawBodyLoad{});
   for (int i = 0; i < d->ncon; ++i)
-    if (const int b = moving_body(m, d->contact[i]); b >= 0 && d->contact[i].efc_address >= 0)
-      ++points_per_body[b];
+    if (const int b = moving_body(m, d->contact[i]); b >= 0 && d->contact[i].efc_address >= 0) {
+      ++load_of_body[b].points;
+      load_of_body[b].depth += std::max(-d->contact[i].dist, 0.0);
+    }
   for (int i = 0; i < d->ncon; ++i) {
     const mjContact& c = d->contact[i];
     if (c.efc_address < 0) continue;
     const int b = moving_body(m, c);
-    const ContactSoftness s = law_point_softness(law, b >= 0 ? points_per_body[b] : 1, h);
+    const double share = b >= 0 ? law_point_share(law, -c.dist, load_of_body[b]) : 1.0;
+    const ContactSoftness s = law_point_softness(law, share, h);
     set_row(d, c.efc_address, s.cfm / h, s.erp / (h * h), 1 / h);
   }
 }

@@ -9,6 +9,7 @@
 #include <mujoco/mujoco.h>
 
 #include "simulator/scene/scene_description.hpp"
+#include "simulator/world/contact_law.hpp"
 
 namespace stride::sim {
 
@@ -16,8 +17,8 @@ namespace stride::sim {
 void orient_law_contacts(mjData* d);
 
 // After mj_makeConstraint: each contact's normal row's R, D and reference terms from the law, the
-// body's spring split over its points against the static scene (world body 0).
+// body's spring shared over its points against the static scene (world body 0) by their depths.
 void impose_law_rows(const mjModel* m, mjData* d, const ContactLaw& law,
-                     std::vector<int>& points_per_body);
+                     std::vector<LawBodyLoad>& load_of_body);
 
 }  // namespace stride::sim

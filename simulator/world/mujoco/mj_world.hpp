@@ -9,6 +9,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include "simulator/world/contact_law.hpp"
 #include "simulator/world/mujoco/mj_box_contacts.hpp"
 #include "simulator/world/mujoco/mj_law_friction.hpp"
 #include "simulator/world/mujoco/mj_tile_contacts.hpp"
@@ -76,15 +77,15 @@ class MjWorld : public PhysicsWorld {
   std::vector<MjcfRobot> robots_;
   std::vector<model::JointVector> initial_q_;
   std::vector<MjRobotLayout> layouts_;
-  std::vector<GeomInfo> geoms_;         // by mjModel geom id
-  std::vector<MjMotor> motors_;         // by dof
-  std::vector<int> points_per_body_;    // the contact law's split, by mjModel body id
-  LawFrictionRows friction_rows_;       // the contact law's friction rows this step
-  OdeBoxBoxContacts box_contacts_;      // the contact law's box-box contacts, ODE's
-  MjTileContacts tile_contacts_;        // the law's contacts with tiles out of the model
-  std::vector<int> block_patch_;        // each tile block's patch
-  std::vector<double> patch_friction_;  // each patch's friction, for its probe geom
-  std::vector<int> probes_;             // each patch's probe geom (tiles out of the model)
+  std::vector<GeomInfo> geoms_;               // by mjModel geom id
+  std::vector<MjMotor> motors_;               // by dof
+  std::vector<LawBodyLoad> points_per_body_;  // the contact law's split, by mjModel body id
+  LawFrictionRows friction_rows_;             // the contact law's friction rows this step
+  OdeBoxBoxContacts box_contacts_;            // the contact law's box-box contacts, ODE's
+  MjTileContacts tile_contacts_;              // the law's contacts with tiles out of the model
+  std::vector<int> block_patch_;              // each tile block's patch
+  std::vector<double> patch_friction_;        // each patch's friction, for its probe geom
+  std::vector<int> probes_;                   // each patch's probe geom (tiles out of the model)
   bool tiles_in_model_ = false;
   std::vector<mjtNum> refreshed_qpos_;  // the positions the last step's refresh posed bodies at
   int static_geoms_ = 0;

@@ -15,7 +15,8 @@ namespace {
 constexpr size_t kMaxRecordedContacts = 4096;
 
 // The law's first friction axis at a contact: world x in the contact plane for its pyramid; for its
-// elliptic cone the way the contact slips, so that the pyramid's bound mu f_n acts against the slip.
+// elliptic cone the way the contact slips, so that the pyramid's bound mu f_n acts against the
+// slip.
 Eigen::Vector3d law_axis(const ContactLaw& law, dBodyID b1, dBodyID b2, const dContactGeom& g) {
   const Eigen::Vector3d n(g.normal[0], g.normal[1], g.normal[2]);
   if (law.cone == ContactLaw::Cone::Pyramid) return law_friction_axis(n);
@@ -43,7 +44,7 @@ OdeWorld::OdeWorld(const PhysicsSettings& physics, const GroundSettings& ground)
   // layer.
   dWorldSetContactSurfaceLayer(world_, physics.contact_law ? 0.0 : 0.0005);
   if (const auto& law = physics.contact_law) {  // realised by the per-point ERP/CFM below
-    const ContactSoftness point = law_point_softness(*law, 1, physics.step);
+    const ContactSoftness point = law_point_softness(*law, 1.0, physics.step);
     physics_.contact_erp = point.erp;
     physics_.contact_cfm = point.cfm;
     physics_.contact_spring_per_body = law->per_body;
@@ -124,8 +125,9 @@ void OdeWorld::collide_pair(dGeomID g1, dGeomID g2) {
   }
 }
 
-// Joins the step's contacts in the order they were found. Per body, a body's n points against
-// the static scene each get 1/n of its spring and damper: the same ERP, n times the CFM.
+// Joins the step's contacts in the order they were found. Per body, a body's points against the
+// static scene share its spring and damper: the same ERP, the CFM over the point's share (by depth
+// under a contact law, 1/n under the old contact_spring_per="body").
 void OdeWorld::create_contact_joints() {
   points_per_body_.clear();
   if (pending_.size() > scene_limits::kMaxContacts) {
@@ -138,21 +140,27 @@ void OdeWorld::create_contact_joints() {
   const auto static_side = [](const PendingContact& p) {
     return p.b1 && p.b2 ? nullptr : (p.b1 ? p.b1 : p.b2);
   };
+  const auto load_of = [this](dBodyID b) -> LawBodyLoad& {
+    auto it = std::find_if(points_per_body_.begin(), points_per_body_.end(),
+                           [b](const auto& e) { return e.first == b; });
+    return it != points_per_body_.end() ? it->second
+                                        : points_per_body_.emplace_back(b, LawBodyLoad{}).second;
+  };
   if (physics_.contact_spring_per_body)
     for (const PendingContact& p : pending_)
       if (dBodyID b = static_side(p)) {
-        auto it = std::find_if(points_per_body_.begin(), points_per_body_.end(),
-                               [b](const auto& e) { return e.first == b; });
-        if (it == points_per_body_.end())
-          points_per_body_.emplace_back(b, 1);
-        else
-          ++it->second;
+        LawBodyLoad& load = load_of(b);
+        ++load.points;
+        load.depth += std::max<double>(p.contact.geom.depth, 0.0);
       }
+  const auto& law = physics_.contact_law;
   for (PendingContact& p : pending_) {
     if (physics_.contact_spring_per_body)
-      if (dBodyID b = static_side(p))
-        for (const auto& [body, count] : points_per_body_)
-          if (body == b) p.contact.surface.soft_cfm *= count;
+      if (dBodyID b = static_side(p)) {
+        const LawBodyLoad& load = load_of(b);
+        p.contact.surface.soft_cfm /=
+            law ? law_point_share(*law, p.contact.geom.depth, load) : 1.0 / load.points;
+      }
     dJointID j = dJointCreateContact(world_, contact_group_, &p.contact);
     dJointAttach(j, p.b1, p.b2);
     if (contacts_.size() < feedback_.size()) {

@@ -7,6 +7,7 @@
 
 #include <ode/ode.h>
 
+#include "simulator/world/contact_law.hpp"
 #include "simulator/world/geom_info.hpp"
 #include "simulator/world/ode/self_contact_candidates.hpp"
 #include "simulator/world/ode/static_geom_grid.hpp"
@@ -55,7 +56,7 @@ class OdeWorld : public PhysicsWorld {
   std::deque<GeomInfo> infos_;
   std::vector<dJointFeedback> feedback_;  // fixed capacity: pointers stay valid within a step
   std::vector<PendingContact> pending_;   // this step's contacts, joined after all collisions
-  std::vector<std::pair<dBodyID, int>> points_per_body_;
+  std::vector<std::pair<dBodyID, LawBodyLoad>> points_per_body_;  // the law's split
   int static_geoms_ = 0;
   SelfContactCandidates self_candidates_;        // rebuilt when the robot geom count changes
   std::unique_ptr<StaticGeomGrid> static_grid_;  // built on the first step, when all are placed
