@@ -214,6 +214,10 @@ std::string RobotProcess::summary() const {
   if (std::find(names.begin(), names.end(), "WalkingJointRequest") != names.end())
     o << "leg IK beyond the joint limits: "
       << runtime_->get("representation:WalkingJointRequest.ik_beyond_limit_frames") << " frames\n";
+  // A walk on request: where its plan took the torso (what the walk granted, integrated).
+  if (std::find(names.begin(), names.end(), "WalkStatus") != names.end())
+    o << "walk plan odometry: " << runtime_->get("representation:WalkStatus.odometry")
+      << "  steps " << runtime_->get("representation:WalkStatus.steps") << "\n";
   return o.str();
 }
 

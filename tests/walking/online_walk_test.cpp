@@ -70,7 +70,7 @@ TEST(OnlineWalk, GrantsTheRequestWithinRangeAndItsChangePerStep) {
 
 TEST(OnlineWalk, StaysContinuousThroughEveryChangeAndEndsStanding) {
   const PatternParameters p = preset("medium");
-  OnlineWalk w(p, StepLimits{}, {});
+  OnlineWalk w(p, StepLimits{}, {}, {});
   const std::vector<WalkSample> s = run(w, kScenario, 16.0);
   ASSERT_TRUE(w.ended(16.0)) << "still walking after the stop request";
   double worst_waist = 0, worst_velocity = 0, worst_foot = 0, worst_yaw = 0;
@@ -103,7 +103,7 @@ TEST(OnlineWalk, StaysContinuousThroughEveryChangeAndEndsStanding) {
 }
 
 TEST(OnlineWalk, FollowsTheRequestsIntegratedOverTime) {
-  OnlineWalk w(preset("medium"), StepLimits{}, {});
+  OnlineWalk w(preset("medium"), StepLimits{}, {}, {});
   const std::vector<WalkSample> s = run(w, kScenario, 16.0);
   // Forward 0.2 m/s for about 3 s after a ramp of 4 steps, then sideways and turning in place.
   const WalkSample& at3 = s[3000];
@@ -126,7 +126,7 @@ TEST(OnlineWalk, FollowsTheRequestsIntegratedOverTime) {
 }
 
 TEST(OnlineWalk, TurningFeetStayWithinTheJointLimitsAndTheTorsoBetweenThem) {
-  OnlineWalk w(preset("medium"), StepLimits{}, {});
+  OnlineWalk w(preset("medium"), StepLimits{}, {}, {});
   const std::vector<WalkSample> s = run(w, kScenario, 16.0);
   int beyond = 0, unreachable = 0;
   double widest = 0;
@@ -146,7 +146,7 @@ TEST(OnlineWalk, TurningFeetStayWithinTheJointLimitsAndTheTorsoBetweenThem) {
 }
 
 TEST(OnlineWalk, LandingsAreTheFootholdsTheFeetReach) {
-  OnlineWalk w(preset("medium"), StepLimits{}, {});
+  OnlineWalk w(preset("medium"), StepLimits{}, {}, {});
   std::array<Landing, 4> next;
   for (double t = 0.0; t < 4.0; t += kDt) {
     w.advance(t, true, {0.1, 0.02, 0.3});
@@ -165,7 +165,7 @@ TEST(OnlineWalk, LandingsAreTheFootholdsTheFeetReach) {
 }
 
 TEST(OnlineWalk, StandingAskedToStandNeverSteps) {
-  OnlineWalk w(preset("medium"), StepLimits{}, {0.5, -0.2, 1.0});
+  OnlineWalk w(preset("medium"), StepLimits{}, {0.5, -0.2, 1.0}, {});
   for (double t = 0.0; t < 2.0; t += 0.01) w.advance(t, false, {0.2, 0, 0});
   EXPECT_EQ(w.planned_steps(), 0);
   const WalkSample s = w.sample(2.0);

@@ -60,12 +60,13 @@ debug_run() {
   port=$(screen sim | sed -n 's/^debug server on 127\.0\.0\.1:\([0-9]*\) .*/\1/p' | head -n 1)
 }
 # lola_pair <socket> <simulator flags> [robot flags]: the simulated NAO on LoLA (window sim) and
-# `stride robot --debug` driving it (window robot); sets $port to its debug server's.
+# `stride robot --debug` driving it (window robot); sets $port to its debug server's. The scene
+# and robot config are the hip walk's unless $lola_scene / $lola_config name others.
 lola_pair() {
-  open sim "'$stride' run scenes/experiments/hip_medium.xml $2 --lola '$1'"
+  open sim "'$stride' run '${lola_scene:-scenes/experiments/hip_medium.xml}' $2 --lola '$1'"
   for _ in $(seq 1 300); do [ -S "$1" ] && break; sleep 0.2; done
   [ -S "$1" ] || fail "the simulator's LoLA socket never appeared" sim
-  open robot "'$stride' robot --config '$src/scenes/robots/nao/config/hip_walk.xml' --lola '$1' --debug 127.0.0.1:0 ${3:-} 2>&1"
+  open robot "'$stride' robot --config '${lola_config:-$src/scenes/robots/nao/config/hip_walk.xml}' --lola '$1' --debug 127.0.0.1:0 ${3:-} 2>&1"
   wait_for 'debug server on 127\.0\.0\.1:[0-9]+' 60 robot
   port=$(screen robot | sed -n 's/.*debug server on 127\.0\.0\.1:\([0-9]*\).*/\1/p' | head -n 1)
 }

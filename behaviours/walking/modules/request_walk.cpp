@@ -1,5 +1,6 @@
 #include "behaviours/walking/modules/request_walk.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "behaviours/walking/steps/walk_joints.hpp"
 #include "robot/core/error.hpp"
 #include "robot/representations/frame_info.hpp"
+#include "robot/representations/inertial_sensor_data.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
 
 namespace stride::behaviours {
@@ -19,6 +21,7 @@ walking::PatternParameters request_walk_pattern(const RequestWalkParameters& r) 
   WalkParameters w;
   w.preset = r.preset;
   w.T_stride = r.T_stride;
+  w.tau_dsp = r.tau_dsp;
   w.A_l = r.A_l;
   w.z_min = r.z_min;
   w.z_max = r.z_max;
@@ -36,9 +39,9 @@ namespace {
 
 bool same_pattern_fields(const RequestWalkParameters& a, const RequestWalkParameters& b) {
   const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
-  return a.preset == b.preset && same(a.T_stride, b.T_stride) && same(a.A_l, b.A_l) &&
-         same(a.z_min, b.z_min) && same(a.z_max, b.z_max) && same(a.d_0, b.d_0) &&
-         same(a.H_foot, b.H_foot);
+  return a.preset == b.preset && same(a.T_stride, b.T_stride) && same(a.tau_dsp, b.tau_dsp) &&
+         same(a.A_l, b.A_l) && same(a.z_min, b.z_min) && same(a.z_max, b.z_max) &&
+         same(a.d_0, b.d_0) && same(a.H_foot, b.H_foot);
 }
 
 WalkPlan plan_of(const walking::WalkSample& s, const walking::OnlineWalk& walk) {
@@ -64,6 +67,7 @@ class RequestWalk final : public Module {
   explicit RequestWalk(ModuleContext& c)
       : frame_(c.require<FrameInfo>()),
         joints_(c.require<JointSensorData>()),
+        inertial_(c.require<InertialSensorData>()),
         wanted_(c.require<WalkRequest>()),
         params_(c.parameters<RequestWalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
@@ -77,6 +81,8 @@ class RequestWalk final : public Module {
       start_pose_ = joints_.position;
     }
     const double elapsed = frame_.time - *first_time_;
+    if (last_time_) measured_yaw_ += inertial_.gyro.z() * (frame_.time - *last_time_);
+    last_time_ = frame_.time;
     adopt_limits();
     double t = frame_.time - walk_start_;
     if (!walk_ || walk_->planned_steps() == 0 || walk_->ended(t)) {
@@ -85,7 +91,7 @@ class RequestWalk final : public Module {
       t = 0.0;
     }
     const bool walk = wanted_.mode == WalkMode::walk && elapsed >= params_.start_delay;
-    walk_->advance(t, walk, {wanted_.forward, wanted_.sideways, wanted_.turn});
+    walk_->advance(t, walk, {wanted_.forward, wanted_.sideways, wanted_.turn}, turn_correction(t));
     const walking::WalkSample s = walk_->sample(t);
     const walking::LegJoints legs = walking::leg_joints(s).legs;
     request_ = walking_request(legs);
@@ -98,11 +104,18 @@ class RequestWalk final : public Module {
   }
 
  private:
+  // The heading loop's turn rate: the reference path's yaw against the gyro's.
+  double turn_correction(double t) const {
+    const double error = walking::wrap_angle(walk_->sample(t).reference.yaw - measured_yaw_);
+    const double c = params_.heading_gain * error;
+    return std::clamp(c, -params_.max_turn, params_.max_turn);
+  }
+
   // A fresh walk standing where the last one ended, with the parameters as they are now.
   void stand_ready(double t) {
     const bool changed = !walk_ || !same_pattern_fields(params_, built_from_);
     if (walk_ && walk_->planned_steps() == 0 && !changed) return;
-    const walking::Pose2 at = walk_ ? walk_->sample(t).frame : walking::Pose2{};
+    const walking::WalkSample here = walk_ ? walk_->sample(t) : walking::WalkSample{};
     walking::PatternParameters p = walk_ ? walk_->parameters() : walking::PatternParameters{};
     try {
       p = request_walk_pattern(params_);
@@ -111,7 +124,7 @@ class RequestWalk final : public Module {
       say_once(std::string("RequestWalk keeps its pattern: ") + e.what());
     }
     built_from_ = params_;
-    walk_.emplace(p, limits_, at);
+    walk_.emplace(p, limits_, here.frame, here.reference);
     steps_before_ += planned_;
     planned_ = 0;
   }
@@ -143,7 +156,9 @@ class RequestWalk final : public Module {
     w.ramping = walking_asked && !(g == walking::within_range(asked, limits_));
     w.step = s.step;
     w.steps = steps_before_ + planned_;
-    w.odometry = {s.frame.x, s.frame.y, s.frame.yaw};
+    w.odometry = {s.reference.x, s.reference.y, s.reference.yaw};
+    w.plan = {s.frame.x, s.frame.y, s.frame.yaw};
+    w.measured_yaw = measured_yaw_;
     w.ik_beyond_limit_frames = beyond_limit_frames_;
     w.parameters_pending = !same_pattern_fields(params_, built_from_);
   }
@@ -156,6 +171,7 @@ class RequestWalk final : public Module {
 
   const FrameInfo& frame_;
   const JointSensorData& joints_;
+  const InertialSensorData& inertial_;
   const WalkRequest& wanted_;
   const RequestWalkParameters& params_;
   WalkingJointRequest& request_;
@@ -165,7 +181,8 @@ class RequestWalk final : public Module {
   std::optional<walking::OnlineWalk> walk_;
   RequestWalkParameters built_from_;
   walking::StepLimits limits_;
-  std::optional<double> first_time_;
+  std::optional<double> first_time_, last_time_;
+  double measured_yaw_ = 0.0;
   double walk_start_ = 0.0;
   std::array<double, hal::kNumJoints> start_pose_{};
   std::int64_t beyond_limit_frames_ = 0, steps_before_ = 0, planned_ = 0;

@@ -22,6 +22,7 @@ struct RequestWalkParameters {
 
   WalkPreset preset = WalkPreset::medium;
   double T_stride = kFromPreset;  // s; "nan": the preset's (as WalkParameters)
+  double tau_dsp = kFromPreset;   // double-support ratio
   double A_l = kFromPreset;       // m
   double z_min = kFromPreset;     // m
   double z_max = kFromPreset;     // m
@@ -35,6 +36,9 @@ struct RequestWalkParameters {
   double forward_per_step = walking::StepLimits{}.forward_per_step;    // m/s a step
   double sideways_per_step = walking::StepLimits{}.sideways_per_step;  // m/s a step
   double turn_per_step = walking::StepLimits{}.turn_per_step;          // rad/s a step
+  // Heading loop: turn rate added (rad/s per rad) to steps planned while the torso's yaw, from
+  // the gyro, lags the granted requests' (feet turn on the floor); at most max_turn more.
+  double heading_gain = 0.0;
   double start_delay = 1.0;         // s standing before the first step may start
   double interpolation_time = 1.0;  // s from the measured pose to the standing pose
 
@@ -43,15 +47,16 @@ struct RequestWalkParameters {
     using P = RequestWalkParameters;
     return std::make_tuple(
         field("preset", &P::preset), field("T_stride", &P::T_stride, "s"),
-        field("A_l", &P::A_l, "m"), field("z_min", &P::z_min, "m"), field("z_max", &P::z_max, "m"),
-        field("d_0", &P::d_0, "m"), field("H_foot", &P::H_foot, "m"),
-        field("max_forward", &P::max_forward, "m/s", Range{0, 1}),
+        field("tau_dsp", &P::tau_dsp), field("A_l", &P::A_l, "m"), field("z_min", &P::z_min, "m"),
+        field("z_max", &P::z_max, "m"), field("d_0", &P::d_0, "m"),
+        field("H_foot", &P::H_foot, "m"), field("max_forward", &P::max_forward, "m/s", Range{0, 1}),
         field("max_backward", &P::max_backward, "m/s", Range{0, 1}),
         field("max_sideways", &P::max_sideways, "m/s", Range{0, 1}),
         field("max_turn", &P::max_turn, "rad/s", Range{0, 5}),
         field("forward_per_step", &P::forward_per_step, "m/s", Range{0.001, 1}),
         field("sideways_per_step", &P::sideways_per_step, "m/s", Range{0.001, 1}),
         field("turn_per_step", &P::turn_per_step, "rad/s", Range{0.001, 5}),
+        field("heading_gain", &P::heading_gain, "1/s", Range{0, 20}),
         field("start_delay", &P::start_delay, "s", Range{0, 3600}),
         field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}));
   }

@@ -61,8 +61,9 @@ struct EnumNames<WalkState> {
 };
 
 // The walk's answer: what it granted for the step last planned (the request within the walk's
-// range and its change per step), whether that is less than asked, and where its plan has taken
-// the torso's walk frame (odometry of the plan, from where the module started).
+// range and its change per step), whether that is less than asked, where the granted requests
+// put the torso's walk frame (odometry: their integral, from where the module started), where the
+// plan has it (with the heading loop's turns) and the torso's yaw the gyro says.
 struct WalkStatus {
   WalkState state = WalkState::standing;
   double granted_forward = 0.0;      // m/s
@@ -72,7 +73,9 @@ struct WalkStatus {
   bool ramping = false;              // the granted velocity is still on its way to the request
   std::int64_t step = -1;            // waist step under way (-1 standing), counted per walk
   std::int64_t steps = 0;            // waist steps planned since the module started
-  std::array<double, 3> odometry{};  // planned x, y (m) and yaw (rad) of the walk frame
+  std::array<double, 3> odometry{};  // x, y (m) and yaw (rad) of the granted requests' path
+  std::array<double, 3> plan{};      // x, y, yaw of the walk frame as planned
+  double measured_yaw = 0.0;         // rad: the gyro's z rate integrated since the start
   std::int64_t ik_beyond_limit_frames = 0;
   bool parameters_pending = false;  // changed pattern parameters wait for the next stand
 
@@ -84,7 +87,8 @@ struct WalkStatus {
         field("granted_sideways", &W::granted_sideways, "m/s"),
         field("granted_turn", &W::granted_turn, "rad/s"), field("limited", &W::limited),
         field("ramping", &W::ramping), field("step", &W::step), field("steps", &W::steps),
-        field("odometry", &W::odometry),
+        field("odometry", &W::odometry), field("plan", &W::plan),
+        field("measured_yaw", &W::measured_yaw, "rad"),
         field("ik_beyond_limit_frames", &W::ik_beyond_limit_frames),
         field("parameters_pending", &W::parameters_pending));
   }

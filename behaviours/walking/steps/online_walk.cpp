@@ -20,34 +20,45 @@ double side_of(Foot f) {
 
 }  // namespace
 
-OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at)
-    : p_(p), limits_(limits), T_(p.T_step()), T_s_(p.T_s()), origin_(at) {
+OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at,
+                       const Pose2& reference)
+    : p_(p),
+      limits_(limits),
+      T_(p.T_step()),
+      T_s_(p.T_s()),
+      origin_(at),
+      reference_origin_(reference) {
   if (auto e = validation_error(p)) throw Error(*e);
   if (const std::string e = limits_error(limits); !e.empty()) throw Error(e);
 }
 
-void OnlineWalk::advance(double t, bool walk, const StepVelocity& wanted) {
+void OnlineWalk::advance(double t, bool walk, const StepVelocity& wanted, double turn_correction) {
   if (next_step_ == 0 && !walk) return;  // standing, asked to stand
-  while (!stopping() && decision_time(next_step_) <= t) plan(walk, wanted);
+  while (!stopping() && decision_time(next_step_) <= t) plan(walk, wanted, turn_correction);
 }
 
-void OnlineWalk::plan(bool walk, const StepVelocity& wanted) {
+void OnlineWalk::plan(bool walk, const StepVelocity& wanted, double turn_correction) {
   const int k = next_step_;
   wanted_in_range_ = walk ? within_range(wanted, limits_) : StepVelocity{};
+  const StepVelocity granted_before = k == 0 ? StepVelocity{} : reference_.back().to();
   const StepVelocity previous = k == 0 ? StepVelocity{} : step(k - 1).to();
-  const Pose2 start = k == 0 ? origin_ : step(k - 1).end();
   StepKind kind = k == 0 ? StepKind::kFirst : StepKind::kMiddle;
-  if (!walk && k > 0 && can_stop_within_a_step(previous, limits_)) {
+  if (!walk && k > 0 && can_stop_within_a_step(granted_before, limits_)) {
     kind = StepKind::kLast;
     granted_ = {};
     steps_total_ = k + 1;
   } else {
-    granted_ = next_step_velocity(previous, wanted_in_range_, limits_);
+    granted_ = next_step_velocity(granted_before, wanted_in_range_, limits_);
   }
-  steps_.emplace_back(p_, k, kind, previous, granted_, start);
+  StepVelocity planned = granted_;
+  if (std::isfinite(turn_correction)) planned.turn += turn_correction;
+  steps_.emplace_back(p_, k, kind, previous, planned, k == 0 ? origin_ : step(k - 1).end());
+  reference_.emplace_back(p_, k, kind, granted_before, granted_,
+                          k == 0 ? reference_origin_ : reference_.back().end());
   ++next_step_;
   while (static_cast<int>(steps_.size()) > kKeptSteps) {
     steps_.pop_front();
+    reference_.pop_front();
     ++first_kept_;
   }
 }
@@ -124,7 +135,9 @@ WalkSample OnlineWalk::sample(double t) const {
   s.support = support(t);
   s.torso_yaw = model::torso_yaw_between(s.left.yaw, s.right.yaw);
   if (next_step_ == 0 || !(t > 0.0) || ended(t)) {
-    s.frame = next_step_ == 0 || !(t > 0.0) ? origin_ : step(steps_total_ - 1).end();
+    const bool before = next_step_ == 0 || !(t > 0.0);
+    s.frame = before ? origin_ : step(steps_total_ - 1).end();
+    s.reference = before ? reference_origin_ : reference_.back().end();
     s.waist = {s.frame.x, s.frame.y, p_.z_max};
     s.zmp = s.waist.head<2>();
     return s;
@@ -135,6 +148,9 @@ WalkSample OnlineWalk::sample(double t) const {
   const LocalMotion m = w.local(u);
   s.step = k;
   s.frame = w.frame_at(u);
+  s.reference =
+      reference_[std::clamp(k - first_kept_, 0, static_cast<int>(reference_.size()) - 1)].frame_at(
+          u);
   s.velocity = {m.forward.v, m.sideways.v, m.heading.v};
   const double yaw = s.frame.yaw, rate = m.heading.v;
   const Eigen::Vector2d xy = point_in(s.frame, 0.0, m.sway.p);

@@ -26,9 +26,10 @@ struct FootPose {
 
 // The pattern at one instant; frame: the world frame of the walk's origin (x forward, y left).
 struct WalkSample {
-  double t = 0.0;                                   // walk time
-  Pose2 frame;                                      // the walk frame (the plan's odometry)
-  StepVelocity velocity;                            // the walk frame's, in its own axes
+  double t = 0.0;         // walk time
+  Pose2 frame;            // the walk frame (the plan's odometry)
+  Pose2 reference;        // where the granted requests alone put it (no heading correction)
+  StepVelocity velocity;  // the walk frame's, in its own axes
   Eigen::Vector3d waist = Eigen::Vector3d::Zero();  // torso origin
   Eigen::Vector3d waist_velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d waist_acceleration = Eigen::Vector3d::Zero();
@@ -47,12 +48,16 @@ struct Landing {
 
 class OnlineWalk {
  public:
-  // Standing at `at` (the walk frame; feet d_0 either side); p is validated (throws Error).
-  OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at);
+  // Standing at `at` (the walk frame; feet d_0 either side), the reference path continuing from
+  // `reference`; p and limits are validated (throws Error).
+  OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at,
+             const Pose2& reference);
 
   // Plans every step whose lift-off is at or before walk time `t` from the request then:
-  // `walk` false asks to stop. Times only go forward.
-  void advance(double t, bool walk, const StepVelocity& wanted);
+  // `walk` false asks to stop. `turn_correction` (rad/s) is added to the granted turn of the steps
+  // planned, beyond the limits' range (a heading loop makes up for the feet turning on the floor)
+  // but not into the reference path. Times only go forward.
+  void advance(double t, bool walk, const StepVelocity& wanted, double turn_correction = 0.0);
   WalkSample sample(double t) const;
   // The planned landings of the swings that end after `t`, soonest first, at most out.size().
   int landings_after(double t, std::span<Landing> out) const;
@@ -69,7 +74,7 @@ class OnlineWalk {
   void set_limits(const StepLimits& limits) { limits_ = limits; }
 
  private:
-  void plan(bool walk, const StepVelocity& wanted);
+  void plan(bool walk, const StepVelocity& wanted, double turn_correction);
   double decision_time(int k) const { return k == 0 ? 0.0 : k * T_ - T_s_; }
   const WaistStep& step(int k) const;
   Pose2 foothold(int j) const;
@@ -83,10 +88,12 @@ class OnlineWalk {
   StepLimits limits_;
   double T_, T_s_;
   Pose2 origin_;
-  std::deque<WaistStep> steps_;  // the last few planned steps
-  int first_kept_ = 0;           // index of steps_.front()
-  int next_step_ = 0;            // steps planned so far
-  int steps_total_ = 0;          // N once the last step is planned, else 0
+  std::deque<WaistStep> steps_;      // the last few planned steps
+  std::deque<WaistStep> reference_;  // the same steps at the granted velocities alone
+  Pose2 reference_origin_;
+  int first_kept_ = 0;   // index of steps_.front()
+  int next_step_ = 0;    // steps planned so far
+  int steps_total_ = 0;  // N once the last step is planned, else 0
   StepVelocity granted_, wanted_in_range_;
 };
 
