@@ -174,5 +174,29 @@ TEST(WalkRequest, RequestWalkTakesNewPatternParametersWhenItStandsAgain) {
   EXPECT_TRUE(all_finite(rt.representation<WalkingJointRequest>()));
 }
 
+// The still link's gyro says the torso never turns: the heading loop turns the plan further than
+// the granted requests, by at most max_turn more; without it the plan is the requests' path.
+TEST(WalkRequest, HeadingLoopTurnsThePlanWhileTheGyroLags) {
+  for (const double gain : {0.0, 1.0}) {
+    StillLink link;
+    Runtime rt(registry(), config("RequestWalk"), link);
+    rt.set_parameters("RequestWalk", "heading_gain=" + std::to_string(gain));
+    rt.set_parameters("ScriptedWalkRequest", "mode=walk turn=0.3");
+    steps(rt, 5.0);
+    const auto& status = rt.representation<WalkStatus>();
+    EXPECT_EQ(status.measured_yaw, 0.0);
+    EXPECT_GT(status.odometry[2], 1.0);  // about 0.3 rad/s for 4 s
+    if (gain == 0.0) {
+      EXPECT_EQ(status.plan, status.odometry);
+    } else {
+      // The plan turns at up to max_turn (0.6) more: ahead of the requests' path, by at most that.
+      EXPECT_GT(status.plan[2] - status.odometry[2], 0.5);
+      EXPECT_LT(status.plan[2] - status.odometry[2], 0.6 * 4.0);
+      EXPECT_DOUBLE_EQ(status.granted_turn, 0.3);  // what is granted stays the request
+    }
+    EXPECT_EQ(status.ik_beyond_limit_frames, 0) << gain;
+  }
+}
+
 }  // namespace
 }  // namespace stride
