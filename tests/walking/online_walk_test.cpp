@@ -174,5 +174,27 @@ TEST(OnlineWalk, StandingAskedToStandNeverSteps) {
   EXPECT_DOUBLE_EQ(s.torso_yaw, 1.0);
 }
 
+// Limits raised beyond what the legs reach: steps whose leg IK would leave the joint limits are
+// planned again with half their change, so every frame stays within them and less is granted.
+TEST(OnlineWalk, StepsBeyondTheLegsReachAreShortened) {
+  const StepLimits wide{1.0, 1.0, 1.0, 5.0, 1.0, 1.0, 5.0};
+  OnlineWalk w(preset("medium"), wide, {}, {});
+  const std::vector<Phase> phases = {{2.0, true, {1.0, 0, 0}},
+                                     {4.0, true, {0, -1.0, 0}},
+                                     {6.0, true, {0, 0, 5.0}},
+                                     {99.0, false, {}}};
+  int beyond = 0;
+  double fastest = 0;
+  for (const WalkSample& x : run(w, phases, 9.0)) {
+    beyond += leg_joints(x).legs.beyond_limits != 0 || !leg_joints(x).legs.reachable;
+    fastest = std::max(fastest, x.velocity.forward);
+  }
+  EXPECT_EQ(beyond, 0);
+  EXPECT_GT(w.shortened(), 10);
+  EXPECT_LT(fastest, 0.9);  // far less than asked
+  EXPECT_GT(fastest, 0.2);  // but more than the default limits grant
+  EXPECT_TRUE(w.ended(9.0));
+}
+
 }  // namespace
 }  // namespace stride::walking

@@ -124,6 +124,7 @@ class RequestWalk final : public Module {
       say_once(std::string("RequestWalk keeps its pattern: ") + e.what());
     }
     built_from_ = params_;
+    if (walk_) shortened_before_ += walk_->shortened();
     walk_.emplace(p, limits_, here.frame, here.reference);
     steps_before_ += planned_;
     planned_ = 0;
@@ -160,6 +161,7 @@ class RequestWalk final : public Module {
     w.plan = {s.frame.x, s.frame.y, s.frame.yaw};
     w.measured_yaw = measured_yaw_;
     w.ik_beyond_limit_frames = beyond_limit_frames_;
+    w.shortened_steps = shortened_before_ + walk_->shortened();
     w.parameters_pending = !same_pattern_fields(params_, built_from_);
   }
 
@@ -185,7 +187,7 @@ class RequestWalk final : public Module {
   double measured_yaw_ = 0.0;
   double walk_start_ = 0.0;
   std::array<double, hal::kNumJoints> start_pose_{};
-  std::int64_t beyond_limit_frames_ = 0, steps_before_ = 0, planned_ = 0;
+  std::int64_t beyond_limit_frames_ = 0, steps_before_ = 0, planned_ = 0, shortened_before_ = 0;
   std::string last_said_;
 };
 

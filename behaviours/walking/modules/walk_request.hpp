@@ -77,7 +77,8 @@ struct WalkStatus {
   std::array<double, 3> plan{};      // x, y, yaw of the walk frame as planned
   double measured_yaw = 0.0;         // rad: the gyro's z rate integrated since the start
   std::int64_t ik_beyond_limit_frames = 0;
-  bool parameters_pending = false;  // changed pattern parameters wait for the next stand
+  std::int64_t shortened_steps = 0;  // plans halved to keep the leg IK within the limits
+  bool parameters_pending = false;   // changed pattern parameters wait for the next stand
 
   static constexpr std::string_view kTypeName = "WalkStatus";
   static constexpr auto fields() {
@@ -90,6 +91,7 @@ struct WalkStatus {
         field("odometry", &W::odometry), field("plan", &W::plan),
         field("measured_yaw", &W::measured_yaw, "rad"),
         field("ik_beyond_limit_frames", &W::ik_beyond_limit_frames),
+        field("shortened_steps", &W::shortened_steps),
         field("parameters_pending", &W::parameters_pending));
   }
 };

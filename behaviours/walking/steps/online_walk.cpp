@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "behaviours/walking/pattern/point_mass_zmp.hpp"
+#include "behaviours/walking/steps/walk_joints.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/kinematics/nao_leg_ik.hpp"
 
@@ -13,6 +14,17 @@ namespace stride::walking {
 namespace {
 
 constexpr int kKeptSteps = 4;  // steps sampled at most one back and one ahead of the current
+
+// Candidate i (1..kFallbacks) after `to` from `from` failed: half, a quarter and an eighth of the
+// change, none of it, then `from` slowed to 3/4, 1/2, 1/4 and rest.
+constexpr int kFallbacks = 8;
+StepVelocity fallback(const StepVelocity& from, const StepVelocity& to, int i) {
+  constexpr double kShare[] = {1.0, 0.5, 0.25, 0.125, 0.0};
+  const double f = i < 5 ? kShare[i] : 0.0, slow = i < 5 ? 1.0 : 1.0 - 0.25 * (i - 4);
+  return {slow * from.forward + f * (to.forward - from.forward),
+          slow * from.sideways + f * (to.sideways - from.sideways),
+          slow * from.turn + f * (to.turn - from.turn)};
+}
 
 double side_of(Foot f) {
   return f == Foot::kLeft ? 1.0 : -1.0;
@@ -52,15 +64,41 @@ void OnlineWalk::plan(bool walk, const StepVelocity& wanted, double turn_correct
   }
   StepVelocity planned = granted_;
   if (std::isfinite(turn_correction)) planned.turn += turn_correction;
-  steps_.emplace_back(p_, k, kind, previous, planned, k == 0 ? origin_ : step(k - 1).end());
+  const Pose2 start = k == 0 ? origin_ : step(k - 1).end();
+  // A step whose leg IK leaves the joint limits or the legs' reach is planned again with less of
+  // its change, then slower than the step before: what the walk grants is what it can do.
+  const StepVelocity wanted_granted = granted_, wanted_planned = planned;
+  for (int i = 0;; ++i) {
+    steps_.emplace_back(p_, k, kind, previous, planned, start);
+    ++next_step_;
+    if (kind == StepKind::kLast || i == kFallbacks || within_reach(k)) break;
+    steps_.pop_back();
+    --next_step_;
+    ++shortened_;
+    granted_ = fallback(granted_before, wanted_granted, i + 1);
+    planned = fallback(previous, wanted_planned, i + 1);
+  }
   reference_.emplace_back(p_, k, kind, granted_before, granted_,
                           k == 0 ? reference_origin_ : reference_.back().end());
-  ++next_step_;
   while (static_cast<int>(steps_.size()) > kKeptSteps) {
     steps_.pop_front();
     reference_.pop_front();
     ++first_kept_;
   }
+}
+
+bool OnlineWalk::within_reach(int k) const {
+  constexpr int kSamples = 50;
+  // Checked with the waist 2 mm higher: a leg that reaches there reaches between the samples.
+  constexpr double kReachMargin = 0.002;  // m
+  const double from = decision_time(k), to = decision_time(k + 1);
+  for (int i = 0; i <= kSamples; ++i) {
+    WalkSample s = sample(from + (to - from) * i / kSamples);
+    s.waist.z() += kReachMargin;
+    const LegJoints q = leg_joints(s).legs;
+    if (q.beyond_limits != 0 || !q.reachable) return false;
+  }
+  return true;
 }
 
 const WaistStep& OnlineWalk::step(int k) const {
@@ -148,9 +186,8 @@ WalkSample OnlineWalk::sample(double t) const {
   const LocalMotion m = w.local(u);
   s.step = k;
   s.frame = w.frame_at(u);
-  s.reference =
-      reference_[std::clamp(k - first_kept_, 0, static_cast<int>(reference_.size()) - 1)].frame_at(
-          u);
+  const int r = std::max(0, k - first_kept_);  // a step being checked has no reference yet
+  s.reference = r < static_cast<int>(reference_.size()) ? reference_[r].frame_at(u) : s.frame;
   s.velocity = {m.forward.v, m.sideways.v, m.heading.v};
   const double yaw = s.frame.yaw, rate = m.heading.v;
   const Eigen::Vector2d xy = point_in(s.frame, 0.0, m.sway.p);

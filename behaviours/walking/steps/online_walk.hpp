@@ -2,8 +2,10 @@
 // The thesis' walking pattern (Ch. 3) planned online, one step at a time, from a velocity request:
 // each waist step's speed, sideways speed and turn rate are chosen when the swing that ends it
 // lifts off (the step's footholds are then fixed), from the request at that moment within the
-// StepLimits. The walk starts from standing with a first step (Eqs. 3.6-3.8) and, once asked to
-// stand and slow enough, ends with a last step that brings the waist to rest between the feet.
+// StepLimits; a step whose leg IK would leave the joint limits or the legs' reach is planned again
+// with half its change. The walk starts from standing with a first step (Eqs. 3.6-3.8) and, once
+// asked to stand and slow enough, ends with a last step that brings the waist to rest between the
+// feet.
 //
 // Footholds: at boundary j the support foot (left at odd j) stands d_0 beside the walk frame
 // F_j, turned with it (Eq. 3.12 on a path); swing j carries the other foot from foothold j-1 to
@@ -70,6 +72,8 @@ class OnlineWalk {
   const StepVelocity& granted() const { return granted_; }
   const StepVelocity& wanted_in_range() const { return wanted_in_range_; }
   int planned_steps() const { return next_step_; }
+  // Plans redone with half their change because the leg IK left the limits or the legs' reach.
+  int shortened() const { return shortened_; }
   const PatternParameters& parameters() const { return p_; }
   void set_limits(const StepLimits& limits) { limits_ = limits; }
 
@@ -77,6 +81,7 @@ class OnlineWalk {
   void plan(bool walk, const StepVelocity& wanted, double turn_correction);
   double decision_time(int k) const { return k == 0 ? 0.0 : k * T_ - T_s_; }
   const WaistStep& step(int k) const;
+  bool within_reach(int k) const;  // the leg IK until step k+1 is planned
   Pose2 foothold(int j) const;
   FootPose foot(Foot f, double t) const;
   FootPose foot_at(Foot f, int j) const;  // standing at foothold j
@@ -94,6 +99,7 @@ class OnlineWalk {
   int first_kept_ = 0;   // index of steps_.front()
   int next_step_ = 0;    // steps planned so far
   int steps_total_ = 0;  // N once the last step is planned, else 0
+  int shortened_ = 0;
   StepVelocity granted_, wanted_in_range_;
 };
 
