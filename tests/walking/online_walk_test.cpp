@@ -92,7 +92,7 @@ TEST(OnlineWalk, StaysContinuousThroughEveryChangeAndEndsStanding) {
   EXPECT_LT(worst_waist, 4e-4);
   EXPECT_LT(worst_velocity, 2e-3);
   EXPECT_LT(worst_foot, 2e-3);
-  EXPECT_LT(worst_yaw, 2e-3);
+  EXPECT_LT(worst_yaw, 3e-3);  // the feet turn within half their swing
   const WalkSample& last = s.back();
   EXPECT_EQ(last.support, SupportPhase::kDouble);
   EXPECT_DOUBLE_EQ(last.waist.z(), p.z_max);

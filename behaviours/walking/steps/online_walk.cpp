@@ -7,6 +7,7 @@
 #include "behaviours/walking/pattern/point_mass_zmp.hpp"
 #include "behaviours/walking/steps/walk_joints.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/number_text.hpp"
 #include "robot/model/kinematics/nao_leg_ik.hpp"
 
 namespace stride::walking {
@@ -33,13 +34,16 @@ double side_of(Foot f) {
 }  // namespace
 
 OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at,
-                       const Pose2& reference)
+                       const Pose2& reference, double turn_share)
     : p_(p),
       limits_(limits),
       T_(p.T_step()),
       T_s_(p.T_s()),
       origin_(at),
-      reference_origin_(reference) {
+      reference_origin_(reference),
+      turn_share_(turn_share) {
+  if (!(turn_share >= 0.1 && turn_share <= 1.0))
+    throw Error("turn_share must be in [0.1, 1] (got " + short_number(turn_share) + ")");
   if (auto e = validation_error(p)) throw Error(*e);
   if (const std::string e = limits_error(limits); !e.empty()) throw Error(e);
 }
@@ -147,14 +151,18 @@ FootPose OnlineWalk::foot(Foot f, double t) const {
   if (t >= swing_end(j)) return at(j + 1);
   const FootPose from = at(j - 1), to = at(j + 1);
   const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
-  // Eq. 3.11 along the line from one foothold to the next: the cycloid's share of the distance
-  // does not depend on the distance, so the yaw turns by the same share.
+  // Eq. 3.11 along the line from one foothold to the next (the cycloid's share of the distance
+  // does not depend on the distance).
   const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
   const double share = (psi - std::sin(psi)) / (2.0 * std::numbers::pi);
   FootPose out;
   out.position = from.position + share * (to.position - from.position);
   out.position.z() = cycloid(1.0, p_.H_foot, progress).y();
-  out.yaw = wrap_angle(from.yaw + share * wrap_angle(to.yaw - from.yaw));
+  // The yaw turns by the same law within the first turn_share_ of the swing: the one HipYawPitch
+  // servo lags, and a turn still under way when the foot lands twists the feet on the floor.
+  const double turn_psi = 2.0 * std::numbers::pi * std::clamp(progress / turn_share_, 0.0, 1.0);
+  const double turned = (turn_psi - std::sin(turn_psi)) / (2.0 * std::numbers::pi);
+  out.yaw = wrap_angle(from.yaw + turned * wrap_angle(to.yaw - from.yaw));
   return out;
 }
 
