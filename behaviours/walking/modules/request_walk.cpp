@@ -39,7 +39,7 @@ namespace {
 
 bool same_pattern_fields(const RequestWalkParameters& a, const RequestWalkParameters& b) {
   const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
-  return a.preset == b.preset && a.turn_share == b.turn_share && same(a.T_stride, b.T_stride) &&
+  return a.preset == b.preset && a.early_share == b.early_share && same(a.T_stride, b.T_stride) &&
          same(a.tau_dsp, b.tau_dsp) && same(a.A_l, b.A_l) && same(a.z_min, b.z_min) &&
          same(a.z_max, b.z_max) && same(a.d_0, b.d_0) && same(a.H_foot, b.H_foot);
 }
@@ -125,7 +125,7 @@ class RequestWalk final : public Module {
     }
     built_from_ = params_;
     if (walk_) shortened_before_ += walk_->shortened();
-    walk_.emplace(p, limits_, here.frame, here.reference, params_.turn_share);
+    walk_.emplace(p, limits_, here.frame, here.reference, params_.early_share);
     steps_before_ += planned_;
     planned_ = 0;
   }

@@ -37,8 +37,9 @@ struct RequestWalkParameters {
   double forward_per_step = walking::StepLimits{}.forward_per_step;    // m/s a step
   double sideways_per_step = walking::StepLimits{}.sideways_per_step;  // m/s a step
   double turn_per_step = walking::StepLimits{}.turn_per_step;          // rad/s a step
-  // Share of its swing within which a foot turns (walking/steps/online_walk.hpp).
-  double turn_share = walking::OnlineWalk::kTurnShare;
+  // Share of its swing within which a foot steps sideways and turns
+  // (walking/steps/online_walk.hpp).
+  double early_share = walking::OnlineWalk::kEarlyShare;
   // Heading loop: turn rate added (rad/s per rad) to steps planned while the torso's yaw, from
   // the gyro, lags the granted requests' (feet turn on the floor); at most max_turn more.
   double heading_gain = 0.0;
@@ -59,7 +60,7 @@ struct RequestWalkParameters {
         field("forward_per_step", &P::forward_per_step, "m/s", Range{0.001, 1}),
         field("sideways_per_step", &P::sideways_per_step, "m/s", Range{0.001, 1}),
         field("turn_per_step", &P::turn_per_step, "rad/s", Range{0.001, 5}),
-        field("turn_share", &P::turn_share, "", Range{0.1, 1}),
+        field("early_share", &P::early_share, "", Range{0.1, 1}),
         field("heading_gain", &P::heading_gain, "1/s", Range{0, 20}),
         field("start_delay", &P::start_delay, "s", Range{0, 3600}),
         field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}));

@@ -34,16 +34,16 @@ double side_of(Foot f) {
 }  // namespace
 
 OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at,
-                       const Pose2& reference, double turn_share)
+                       const Pose2& reference, double early_share)
     : p_(p),
       limits_(limits),
       T_(p.T_step()),
       T_s_(p.T_s()),
       origin_(at),
       reference_origin_(reference),
-      turn_share_(turn_share) {
-  if (!(turn_share >= 0.1 && turn_share <= 1.0))
-    throw Error("turn_share must be in [0.1, 1] (got " + short_number(turn_share) + ")");
+      early_share_(early_share) {
+  if (!(early_share >= 0.1 && early_share <= 1.0))
+    throw Error("early_share must be in [0.1, 1] (got " + short_number(early_share) + ")");
   if (auto e = validation_error(p)) throw Error(*e);
   if (const std::string e = limits_error(limits); !e.empty()) throw Error(e);
 }
@@ -151,18 +151,22 @@ FootPose OnlineWalk::foot(Foot f, double t) const {
   if (t >= swing_end(j)) return at(j + 1);
   const FootPose from = at(j - 1), to = at(j + 1);
   const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
-  // Eq. 3.11 along the line from one foothold to the next (the cycloid's share of the distance
-  // does not depend on the distance).
+  // Eq. 3.11: the cycloid's share of the way along the walk (it does not depend on the distance).
   const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
   const double share = (psi - std::sin(psi)) / (2.0 * std::numbers::pi);
   FootPose out;
-  out.position = from.position + share * (to.position - from.position);
+  // Eq. 3.11's share along the walk; the sideways move and the turn (no thesis equation: its walk
+  // is straight) by the same law within the first early_share_ of the swing, so that the hip roll
+  // and the one HipYawPitch servo, which lag, have arrived when the foot lands.
+  const double early_psi = 2.0 * std::numbers::pi * std::clamp(progress / early_share_, 0.0, 1.0);
+  const double early = (early_psi - std::sin(early_psi)) / (2.0 * std::numbers::pi);
+  const double heading = foothold(j - 1).yaw;
+  const Eigen::Vector2d d = (to.position - from.position).head<2>();
+  const Eigen::Vector2d local = rotated(-heading, d.x(), d.y());
+  out.position = from.position;
+  out.position.head<2>() += rotated(heading, share * local.x(), early * local.y());
   out.position.z() = cycloid(1.0, p_.H_foot, progress).y();
-  // The yaw turns by the same law within the first turn_share_ of the swing: the one HipYawPitch
-  // servo lags, and a turn still under way when the foot lands twists the feet on the floor.
-  const double turn_psi = 2.0 * std::numbers::pi * std::clamp(progress / turn_share_, 0.0, 1.0);
-  const double turned = (turn_psi - std::sin(turn_psi)) / (2.0 * std::numbers::pi);
-  out.yaw = wrap_angle(from.yaw + turned * wrap_angle(to.yaw - from.yaw));
+  out.yaw = wrap_angle(from.yaw + early * wrap_angle(to.yaw - from.yaw));
   return out;
 }
 

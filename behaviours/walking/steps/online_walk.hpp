@@ -9,7 +9,7 @@
 //
 // Footholds: at boundary j the support foot (left at odd j) stands d_0 beside the walk frame
 // F_j, turned with it (Eq. 3.12 on a path); swing j carries the other foot from foothold j-1 to
-// j+1 along the cycloid of Eq. 3.11, its yaw turning early in the swing. The torso yaws
+// j+1 along the cycloid of Eq. 3.11, its sideways move and yaw early in the swing. The torso yaws
 // midway between the feet, the only orientation the shared HipYawPitch reaches with both feet.
 #include <deque>
 #include <span>
@@ -50,17 +50,15 @@ struct Landing {
 
 class OnlineWalk {
  public:
-  // Measured (scenes/experiments/README.md "walk requests"): a turn in place at 0.5 rad/s for
-  // 6 s gets 52 % of its yaw at 1, 74 % at 0.7, 93 % at 0.5, 101 % at 0.4 and 126 % at 0.35; the
-  // scenario's final yaw is 75 / 91 / 98 % at 0.5 / 0.45 / 0.4, but 93 / 120 / 131 % over LoLA.
-  static constexpr double kTurnShare = 0.5;
+  // Measured: scenes/experiments/README.md "walk requests".
+  static constexpr double kEarlyShare = 0.5;
 
   // Standing at `at` (the walk frame; feet d_0 either side), the reference path continuing from
   // `reference`; p and limits are validated (throws Error).
-  // A swinging foot turns within the first `turn_share` of its swing (0.1 to 1; the thesis has
-  // no turn: 1 would turn it with its cycloid's distance).
+  // A swinging foot makes its sideways move and its turn within the first `early_share` of its
+  // swing (0.1 to 1; 1: along its cycloid like its forward move).
   OnlineWalk(const PatternParameters& p, const StepLimits& limits, const Pose2& at,
-             const Pose2& reference, double turn_share = kTurnShare);
+             const Pose2& reference, double early_share = kEarlyShare);
 
   // Plans every step whose lift-off is at or before walk time `t` from the request then:
   // `walk` false asks to stop. `turn_correction` (rad/s) is added to the granted turn of the steps
@@ -107,7 +105,7 @@ class OnlineWalk {
   int next_step_ = 0;    // steps planned so far
   int steps_total_ = 0;  // N once the last step is planned, else 0
   int shortened_ = 0;
-  double turn_share_;
+  double early_share_;
   StepVelocity granted_, wanted_in_range_;
 };
 
