@@ -2,7 +2,9 @@
 // on its uneven floor with its controller, at the shipped settings and the old ones. Counters:
 // steps/s (physics steps per CPU second), rtf (simulated seconds per CPU second) and contacts (the
 // mean contact points a step). The walk runs with the floor's tiles as the engines build them
-// (`floor:engine`) and, for what that buys, as 1920 separate static boxes (`floor:boxes`).
+// (`floor:engine`: ODE's static grid; MuJoCo's blocks of static bodies, or under the contact law
+// no tiles in its model at all, mj_tile_contacts.hpp) and, for what that buys, as 1920 separate
+// static boxes (`floor:boxes`).
 // `--setting=<label>=<attr=v,...>[@walk scene]` (repeatable) times further settings beside them.
 #include <benchmark/benchmark.h>
 
