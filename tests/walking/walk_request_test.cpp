@@ -198,5 +198,30 @@ TEST(WalkRequest, HeadingLoopTurnsThePlanWhileTheGyroLags) {
   }
 }
 
+// Walking to a pose of the odometry's frame: the walk goes there, slowing as it comes near, and
+// stands within 2 cm and 0.05 rad of it (plus what the last steps carry on).
+TEST(WalkRequest, TargetModeWalksToThePoseAndStands) {
+  StillLink link;
+  Runtime rt(registry(), config("RequestWalk"), link);
+  rt.set_parameters("ScriptedWalkRequest", "mode=target target=[0.4, 0.1, 0.6]");
+  const auto& status = rt.representation<WalkStatus>();
+  bool walked = false;
+  for (int i = 0; i < 2000 && !(walked && status.state == WalkState::standing); ++i) {
+    ASSERT_TRUE(rt.step());
+    walked = walked || status.state == WalkState::walking;
+  }
+  EXPECT_TRUE(walked);
+  EXPECT_EQ(status.state, WalkState::standing);
+  EXPECT_NEAR(status.odometry[0], 0.4, 0.03);
+  EXPECT_NEAR(status.odometry[1], 0.1, 0.03);
+  EXPECT_NEAR(status.odometry[2], 0.6, 0.06);
+  EXPECT_LT(rt.representation<FrameInfo>().time, 15.0);
+  EXPECT_EQ(status.ik_beyond_limit_frames, 0);
+  // Standing there, it stays: no step is planned while it has arrived.
+  const std::int64_t steps_then = status.steps;
+  steps(rt, 2.0);
+  EXPECT_EQ(status.steps, steps_then);
+}
+
 }  // namespace
 }  // namespace stride

@@ -9,6 +9,7 @@
 #include "behaviours/walking/modules/pattern_walk.hpp"
 #include "behaviours/walking/modules/walk_plan.hpp"
 #include "behaviours/walking/modules/walk_request.hpp"
+#include "behaviours/walking/steps/pose_target.hpp"
 #include "behaviours/walking/steps/walk_joints.hpp"
 #include "robot/core/error.hpp"
 #include "robot/representations/frame_info.hpp"
@@ -90,8 +91,8 @@ class RequestWalk final : public Module {
       walk_start_ = frame_.time;
       t = 0.0;
     }
-    const bool walk = wanted_.mode == WalkMode::walk && elapsed >= params_.start_delay;
-    walk_->advance(t, walk, {wanted_.forward, wanted_.sideways, wanted_.turn}, turn_correction(t));
+    const bool walk = asked(t) && elapsed >= params_.start_delay;
+    walk_->advance(t, walk, asked_, turn_correction(t));
     const walking::WalkSample s = walk_->sample(t);
     const walking::LegJoints legs = walking::leg_joints(s).legs;
     request_ = walking_request(legs);
@@ -104,6 +105,20 @@ class RequestWalk final : public Module {
   }
 
  private:
+  // Whether the request asks to walk, and at which velocity (asked_): its own, or toward its
+  // target from where the granted requests have put the walk frame.
+  bool asked(double t) {
+    if (wanted_.mode == WalkMode::target) {
+      const auto& g = wanted_.target;
+      const walking::TargetVelocity v =
+          walking::velocity_toward(walk_->sample(t).reference, {g[0], g[1], g[2]}, limits_);
+      asked_ = v.velocity;
+      return !v.arrived;
+    }
+    asked_ = {wanted_.forward, wanted_.sideways, wanted_.turn};
+    return wanted_.mode == WalkMode::walk;
+  }
+
   // The heading loop's turn rate: the reference path's yaw against the gyro's.
   double turn_correction(double t) const {
     const double error = walking::wrap_angle(walk_->sample(t).reference.yaw - measured_yaw_);
@@ -151,10 +166,9 @@ class RequestWalk final : public Module {
     w.granted_forward = g.forward;
     w.granted_sideways = g.sideways;
     w.granted_turn = g.turn;
-    const walking::StepVelocity asked{wanted_.forward, wanted_.sideways, wanted_.turn};
-    const bool walking_asked = wanted_.mode == WalkMode::walk;
-    w.limited = walking_asked && !(walking::within_range(asked, limits_) == asked);
-    w.ramping = walking_asked && !(g == walking::within_range(asked, limits_));
+    const bool walking_asked = wanted_.mode != WalkMode::stand;
+    w.limited = walking_asked && !(walking::within_range(asked_, limits_) == asked_);
+    w.ramping = walking_asked && !(g == walking::within_range(asked_, limits_));
     w.step = s.step;
     w.steps = steps_before_ + planned_;
     w.odometry = {s.reference.x, s.reference.y, s.reference.yaw};
@@ -183,6 +197,7 @@ class RequestWalk final : public Module {
   std::optional<walking::OnlineWalk> walk_;
   RequestWalkParameters built_from_;
   walking::StepLimits limits_;
+  walking::StepVelocity asked_;
   std::optional<double> first_time_, last_time_;
   double measured_yaw_ = 0.0;
   double walk_start_ = 0.0;
@@ -196,7 +211,9 @@ class ScriptedWalkRequest final : public Module {
  public:
   explicit ScriptedWalkRequest(ModuleContext& c)
       : params_(c.parameters<ScriptedWalkRequestParameters>()), out_(c.provide<WalkRequest>()) {}
-  void update() override { out_ = {params_.mode, params_.forward, params_.sideways, params_.turn}; }
+  void update() override {
+    out_ = {params_.mode, params_.forward, params_.sideways, params_.turn, params_.target};
+  }
 
  private:
   const ScriptedWalkRequestParameters& params_;

@@ -11,27 +11,29 @@
 
 namespace stride {
 
-enum class WalkMode { stand, walk };
+enum class WalkMode { stand, walk, target };
 
 template <>
 struct EnumNames<WalkMode> {
   static constexpr std::string_view type_name = "WalkMode";
-  static constexpr std::array<std::string_view, 2> names{"stand", "walk"};
+  static constexpr std::array<std::string_view, 3> names{"stand", "walk", "target"};
 };
 
-// Speeds of the torso in its own axes; stand brings the walk to a stop at the next chance.
+// walk: speeds of the torso in its own axes; target: walk to a pose of the odometry's frame
+// (WalkStatus.odometry) and stand there; stand brings the walk to a stop at the next chance.
 struct WalkRequest {
   WalkMode mode = WalkMode::stand;
-  double forward = 0.0;   // m/s, x of the torso
-  double sideways = 0.0;  // m/s, left positive
-  double turn = 0.0;      // rad/s, counter-clockwise positive
+  double forward = 0.0;            // m/s, x of the torso
+  double sideways = 0.0;           // m/s, left positive
+  double turn = 0.0;               // rad/s, counter-clockwise positive
+  std::array<double, 3> target{};  // x, y (m), yaw (rad)
 
   static constexpr std::string_view kTypeName = "WalkRequest";
   static constexpr auto fields() {
     using W = WalkRequest;
     return std::make_tuple(field("mode", &W::mode), field("forward", &W::forward, "m/s"),
-                           field("sideways", &W::sideways, "m/s"),
-                           field("turn", &W::turn, "rad/s"));
+                           field("sideways", &W::sideways, "m/s"), field("turn", &W::turn, "rad/s"),
+                           field("target", &W::target));
   }
 };
 
@@ -41,6 +43,7 @@ struct ScriptedWalkRequestParameters {
   double forward = 0.0;   // m/s
   double sideways = 0.0;  // m/s
   double turn = 0.0;      // rad/s
+  std::array<double, 3> target{};
 
   static constexpr std::string_view kTypeName = "ScriptedWalkRequestParameters";
   static constexpr auto fields() {
@@ -48,7 +51,8 @@ struct ScriptedWalkRequestParameters {
     return std::make_tuple(field("mode", &W::mode),
                            field("forward", &W::forward, "m/s", Range{-1, 1}),
                            field("sideways", &W::sideways, "m/s", Range{-1, 1}),
-                           field("turn", &W::turn, "rad/s", Range{-5, 5}));
+                           field("turn", &W::turn, "rad/s", Range{-5, 5}),
+                           field("target", &W::target, "", Range{-1000, 1000}));
   }
 };
 
