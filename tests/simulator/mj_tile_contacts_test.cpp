@@ -1,7 +1,7 @@
 // Under the contact law MuJoCo's world holds the uneven floor's tiles outside its model and finds
 // the robot's contacts with them itself (mj_tile_contacts.hpp). They must be the contacts MuJoCo
 // found with the tiles in its model, bit for bit and in the same order: a NAO dropped onto the
-// hip walk's floor with weak motors, so that it lands on its soles and then folds onto its knees,
+// hip walk's floor with weak motors, so that it lands on its soles and then falls on the tiles,
 // gives the same contact list every step and the same state at the end in both worlds.
 #include <cstring>
 #include <iostream>
@@ -90,7 +90,7 @@ TEST(MujocoTileContacts, SameContactsAsWithTheTilesInTheModel) {
   }
   EXPECT_GT(steps_on_tiles, 1000);
   EXPECT_GT(box_tile, 1000);  // the soles
-  EXPECT_GT(other_tile, 0);   // the folded legs' cylinders
+  EXPECT_GT(other_tile, 0);   // its head's sphere and its limbs' cylinders as it falls
   std::cout << "tile contacts: " << box_tile << " of soles, " << other_tile
             << " of other geoms over " << steps_on_tiles << " steps\n";
 }
