@@ -158,8 +158,10 @@ void OdeWorld::create_contact_joints() {
     if (physics_.contact_spring_per_body)
       if (dBodyID b = static_side(p)) {
         const LawBodyLoad& load = load_of(b);
-        p.contact.surface.soft_cfm /=
-            law ? law_point_share(*law, p.contact.geom.depth, load) : 1.0 / load.points;
+        if (law)
+          p.contact.surface.soft_cfm /= law_point_share(*law, p.contact.geom.depth, load);
+        else
+          p.contact.surface.soft_cfm *= load.points;  // as before the law: bit for bit
       }
     dJointID j = dJointCreateContact(world_, contact_group_, &p.contact);
     dJointAttach(j, p.b1, p.b2);
