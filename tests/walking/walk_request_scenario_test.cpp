@@ -18,7 +18,7 @@ namespace {
 using test::ChildProcess;
 
 const std::string kScene = STRIDE_SOURCE_DIR "/scenes/walking/requests/steer.xml";
-const std::string kConfig = STRIDE_SOURCE_DIR "/scenes/walking/requests/steer_robot.xml";
+const std::string kConfig = STRIDE_SOURCE_DIR "/scenes/robots/nao/config/steer.xml";
 constexpr double kSeconds = 15.0;
 
 struct Pose {

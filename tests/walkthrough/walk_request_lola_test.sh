@@ -8,9 +8,9 @@ set -u
 stride=$1 src=$2
 . "$src/tests/walkthrough/tmux_lib.sh"
 
-# steer_robot.xml's controller without its schedule: the console is the schedule here.
-sed '/<at time/,/<\/at>/d; s#"\.\./\.\./robots/nao/nao.urdf"#"'"$src"'/scenes/robots/nao/nao.urdf"#' \
-  "$src/scenes/walking/requests/steer_robot.xml" > "$home/console_walk.xml"
+# The robot config's controller without its schedule: the console is the schedule here.
+sed '/<at time/,/<\/at>/d; s#"\.\./nao.urdf"#"'"$src"'/scenes/robots/nao/nao.urdf"#' \
+  "$src/scenes/robots/nao/config/steer.xml" > "$home/console_walk.xml"
 grep -q '<at time' "$home/console_walk.xml" && fail "the schedule is still in the robot config"
 lola_scene="$src/scenes/walking/requests/steer.xml" lola_config="$home/console_walk.xml"
 lola_pair "$home/sim.sock" "--seconds 120 --realtime"
