@@ -247,6 +247,15 @@ std::chrono::steady_clock::duration Interpreter::run_slice(
   if (!running_) return Clock::duration::zero();
   const auto start = Clock::now();
   Clock::duration wait = Clock::duration::zero();
+  struct FollowOn {  // a remote robot's stream outlives this slice while the run goes on
+    Interpreter& in;
+    explicit FollowOn(Interpreter& i) : in(i) {
+      if (in.remote_) in.remote_->hold_stream(true);
+    }
+    ~FollowOn() {
+      if (in.remote_ && !in.running_) in.remote_->hold_stream(false);
+    }
+  } follow{*this};
   try {
     RobotTarget& robot = target();
     observe({});
@@ -294,6 +303,7 @@ void Interpreter::restart() {
 void Interpreter::pause_run() {
   if (!running_) return;
   running_ = false;
+  if (remote_) remote_->hold_stream(false);
   run_steps_left_.reset();
   out_ << "paused at t=" << target().time_text() << "\n";
 }

@@ -283,25 +283,33 @@ std::string RemoteTarget::time_text() {
   return get("representation:FrameInfo.time");
 }
 
-std::int64_t RemoteTarget::subscribe() {
-  Request r = request(Op::Subscribe);
-  r.keys =
+std::vector<std::string> RemoteTarget::stream_keys() const {
+  const std::vector<std::string> asked =
       observed_.empty() ? std::vector<std::string>{"representation:FrameInfo.frame"} : observed_;
   std::vector<std::string> framework;  // simulation keys fail in get(), not in the stream
   std::vector<std::string> debug;
-  for (const auto& k : r.keys)
+  for (const auto& k : asked)
     if (k.starts_with("representation:") || k.starts_with("module:"))
       framework.push_back(k);
     else if (k.starts_with("debug:"))
       debug.push_back(k);
   if (framework.empty()) framework.push_back("representation:FrameInfo.frame");
-  r.keys = framework;
-  r.keys.insert(r.keys.end(), debug.begin(), debug.end());
+  framework.insert(framework.end(), debug.begin(), debug.end());
+  return framework;
+}
+
+std::int64_t RemoteTarget::subscribe(const std::vector<std::string>& keys) {
+  Request r = request(Op::Subscribe);
+  r.keys = keys;
   const auto reply = call(r);
   // Anything earlier belongs to an older subscription; only its lines are still to be said.
   while (auto s = client_->next_sample(0)) hold_lines(*s);
   idle_stream_ = false;
-  subscribed_ = framework;
+  stream_keys_ = keys;
+  seen_dropped_ = 0;
+  subscribed_.clear();
+  for (const auto& k : keys)
+    if (!k.starts_with("debug:")) subscribed_.push_back(k);
   subscribed_descs_.clear();
   for (const auto& bytes : reply->fields().byte_list("descs")) {
     ByteReader in(bytes);
@@ -313,31 +321,44 @@ std::int64_t RemoteTarget::subscribe() {
   return reply->fields().integer("from");
 }
 
+void RemoteTarget::hold_stream(bool hold) {
+  hold_stream_ = hold;
+  if (hold || next_frame_ < 0) return;
+  next_frame_ = -1;
+  current_.reset();
+  try {
+    stream_idle();
+  } catch (const Error&) {  // a lost robot is told by the next call
+  }
+}
+
 std::uint64_t RemoteTarget::advance(std::uint64_t steps, const std::function<bool()>& after_step) {
   if (steps == 0) return 0;
-  const std::int64_t first = subscribe();
+  const std::vector<std::string> keys = stream_keys();
+  const bool goes_on = hold_stream_ && !idle_stream_ && next_frame_ >= 0 && keys == stream_keys_;
+  const std::int64_t first = goes_on ? next_frame_ : subscribe(keys);
+  next_frame_ = first;
   struct EndStream {  // however the run ends, the light stream follows, so no event is missed
     RemoteTarget& t;
-    ~EndStream() {
+    ~EndStream() {  // a held stream's last sample stays what `get` reads
+      if (t.hold_stream_) return;
       t.current_.reset();
-      try {
-        t.stream_idle();
-      } catch (const Error&) {
-      }
+      t.hold_stream(false);
     }
   } end{*this};
   const double patience = std::max(2.0, 20 * period_);
   std::int64_t from = first;
-  std::uint64_t done = 0, seen_dropped = 0;
+  std::uint64_t done = 0;
   while (done < steps) {
     auto s = client_->next_sample(patience);
     if (!s)
       throw Error("no frame from " + name() + " for " + number_text(patience) +
                   " s (is its loop running?)");
-    dropped_ += s->dropped - std::min(s->dropped, seen_dropped);
-    seen_dropped = s->dropped;
+    dropped_ += s->dropped - std::min(s->dropped, seen_dropped_);
+    seen_dropped_ = s->dropped;
     if (s->frame < from) from = s->frame - static_cast<std::int64_t>(done);  // it restarted
     done = static_cast<std::uint64_t>(std::max<std::int64_t>(s->frame - from + 1, 0));
+    next_frame_ = s->frame + 1;
     current_ = std::move(s);
     if (after_step && !after_step()) break;
   }

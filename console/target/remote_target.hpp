@@ -27,6 +27,10 @@ class RemoteTarget final : public RobotTarget {
   bool loaded() const override { return true; }
 
   std::uint64_t advance(std::uint64_t steps, const std::function<bool()>& after_step) override;
+  // While held, a run's stream outlives each advance and the next one goes on from the frame
+  // after the last it read: a background run following the robot slice by slice does not ask the
+  // robot's loop to change what it copies every frame. Released, the light stream follows.
+  void hold_stream(bool hold);
   double step_seconds() const override { return period_; }
   // Asks the robot its period again while it has none (a robot that starts its loop when the
   // first console connects), waiting up to `patience` s; returns step_seconds().
@@ -77,9 +81,10 @@ class RemoteTarget final : public RobotTarget {
   Listing list();
   Root& fetch(const std::string& key);           // root of the key, fresh from the robot
   std::string streamed(const std::string& key);  // from the current sample
-  std::int64_t subscribe();                      // returns the first frame streamed
-  void stream_idle();                            // the light stream idle_lines() reads
-  void hold_lines(const debug::Sample& s);       // a sample's lines, for the next reader
+  std::vector<std::string> stream_keys() const;  // what a run streams: framework, then debug
+  std::int64_t subscribe(const std::vector<std::string>& keys);  // the first frame streamed
+  void stream_idle();                       // the light stream idle_lines() reads
+  void hold_lines(const debug::Sample& s);  // a sample's lines, for the next reader
   std::string text_of(const TypeDesc& d, const std::string& bytes, const std::string& key);
 
   debug::Endpoint endpoint_;
@@ -92,6 +97,10 @@ class RemoteTarget final : public RobotTarget {
   std::optional<debug::Sample> current_;  // while advancing
   double last_time_ = 0;
   bool idle_stream_ = false;                          // the light stream is asked for
+  bool hold_stream_ = false;                          // a run's stream outlives its advance
+  std::vector<std::string> stream_keys_;              // the run stream's, as asked for
+  std::int64_t next_frame_ = -1;                      // after the last one a held stream read
+  std::uint64_t seen_dropped_ = 0;                    // the stream's count when last read
   std::vector<std::pair<double, std::string>> held_;  // lines read between runs, with their t
   std::uint64_t dropped_ = 0;
 };

@@ -121,7 +121,6 @@ struct Exchange {
   std::atomic<double> period{0};                     // the loop's control period
   std::atomic<std::uint64_t> snapshots_lost{0};      // full ring: the server thread fell behind
   std::atomic<std::uint64_t> loop_allocations{0};    // snapshot buffers and copies the loop made
-  alignas(64) int wake_fd = -1;  // eventfd the loop pokes after a reply (server thread owns it)
 };
 
 }  // namespace stride::debug

@@ -1,8 +1,5 @@
 #include "robot/debug/loop_side.hpp"
 
-#include <sys/eventfd.h>
-#include <unistd.h>
-
 #include <exception>
 
 #include "robot/runtime/controller_keys.hpp"
@@ -278,8 +275,10 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
     take_debug_output(rt);
     if (log_) write_log();
   }
-  bool poke = pending_catalogue_ && push_catalogue();
-  poke |= push_note();
+  // Nothing here wakes the server thread: a system call's wake-up of another core costs the loop
+  // more than all its other boundary work; the server looks every 2 ms while it awaits the loop.
+  if (pending_catalogue_) push_catalogue();
+  push_note();
   // Room for every reply, a catalogue and a snapshot is made sure of before a request is taken.
   replies_.clear();
   LoopRequest in;
@@ -306,7 +305,6 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
     for (auto w : wanted_) any |= w != 0;
     streamed = any;
     if (any && (new_frame || more_wanted || applied)) publish(new_frame);
-    poke |= more_wanted;
   }
   if (new_frame && !streamed) {  // nobody streams this frame: its debug output is not for anyone
     pending_.lines.clear();
@@ -317,11 +315,6 @@ void LoopSide::service(Runtime& rt, bool new_frame) {
     LoopMessage m;
     m.reply = std::move(r);
     x_.to_server.try_push(m);  // room was made sure of above
-  }
-  poke |= applied;
-  if (poke && x_.wake_fd >= 0) {
-    const std::uint64_t one = 1;
-    [[maybe_unused]] const auto n = ::write(x_.wake_fd, &one, sizeof one);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "robot/debug/server.hpp"
 
 #include <sys/eventfd.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
@@ -20,7 +21,7 @@ DebugServer::DebugServer(ServerOptions options)
   Fd listener = listen_tcp(options_.listen, bound_);
   Fd wake(::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC));
   if (!wake) throw Error(std::string("eventfd: ") + std::strerror(errno));
-  exchange_.wake_fd = wake.get();
+  wake_fd_ = wake.get();
   thread_state_ =
       std::make_unique<ServerThread>(options_, exchange_, std::move(listener), std::move(wake));
   thread_ = std::thread([this] {
@@ -31,6 +32,8 @@ DebugServer::DebugServer(ServerOptions options)
 
 DebugServer::~DebugServer() {
   stop_.store(true, std::memory_order_release);
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const auto n = ::write(wake_fd_, &one, sizeof one);
   if (thread_.joinable()) thread_.join();
 }
 

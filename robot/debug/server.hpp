@@ -45,6 +45,7 @@ class DebugServer {
   Exchange exchange_;
   LoopSide loop_;
   std::unique_ptr<ServerThread> thread_state_;
+  int wake_fd_ = -1;  // the server thread's eventfd (it owns it): stopping wakes it at once
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

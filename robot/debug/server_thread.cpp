@@ -313,7 +313,7 @@ void ServerThread::run(const std::atomic<bool>& stop) {
   while (!stop.load(std::memory_order_acquire)) {
     fds.assign({{wake_.get(), POLLIN, 0}, {listener_.get(), POLLIN, 0}});
     order.clear();
-    bool streaming = false;
+    bool streaming = false;  // or a reply awaited from the loop, which never wakes this thread
     for (auto& [id, c] : clients_) {
       short events = 0;
       if (c->state != ClientSession::State::Closing && c->out_bytes < options_.reply_queue)
@@ -321,10 +321,10 @@ void ServerThread::run(const std::atomic<bool>& stop) {
       if (c->out_bytes > 0) events |= POLLOUT;
       fds.push_back({c->fd.get(), events, 0});
       order.push_back(c.get());
-      streaming |= c->sub.has_value();
+      streaming |= c->sub.has_value() || c->in_flight > 0;
     }
-    // Snapshots do not wake this thread (that would cost the loop a system call per frame):
-    // while streaming it looks every 2 ms.
+    // Neither snapshots nor replies wake this thread (that would cost the loop a system call and
+    // another core's wake-up): while streaming or awaiting the loop it looks every 2 ms.
     ::poll(fds.data(), fds.size(), streaming || !parked_.empty() ? 2 : 50);
     if (fds[0].revents & POLLIN) {
       std::uint64_t count;

@@ -168,6 +168,8 @@ struct Condition {
   std::vector<double> compute_us, boundary_us;
   std::vector<double> steady_us;  // compute_us after each block's first 1.5 s (a view attaching)
   std::vector<double> cpu_us;  // the loop thread's CPU time in the step (the host's steal excluded)
+  std::vector<double> due_s;   // each frame's time into its block
+  std::vector<bool> allocated;    // the loop allocated a snapshot buffer or copy in that frame
   std::uint64_t steal_ticks = 0;  // time the host ran something else on the loop's vCPU
   std::int64_t frames = 0, missed = 0, blocks = 0;
   std::uint64_t allocations = 0;  // snapshot buffers and copies the loop allocated
@@ -234,6 +236,7 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   const double start = sim.time();
   const auto wall_start = Clock::now();
   sim.set_controller(0, [&](sim::SimulatedRobot&) {
+    const std::uint64_t made = server.stats().loop_allocations;  // read outside the timed step
     const auto now = Clock::now();
     const double due = sim.time() - start;
     const double late = std::chrono::duration<double>(now - wall_start).count() - due;
@@ -242,6 +245,8 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
     rt.step();
     c.compute_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - now).count());
     if (due >= 1.5) c.steady_us.push_back(c.compute_us.back());
+    c.due_s.push_back(due);
+    c.allocated.push_back(server.stats().loop_allocations != made);
     c.cpu_us.push_back(thread_cpu_us() - cpu_start);
     c.boundary_us.push_back(static_cast<double>(boundary.last_ns.load()) * 1e-3);
     ++c.frames;
@@ -406,6 +411,23 @@ void print_condition(const Condition& c) {
             << cpu[0] << " p99 " << cpu[1] << " max " << cpu[2] << "\n";
 }
 
+// Where a condition's slowest frames fall in its blocks: of the frames over `threshold`, how many
+// in each half second from a block's start (a view attaching shows as a heap at the start).
+void print_tail_by_time(const Condition& c, double threshold) {
+  std::vector<int> bins;
+  int allocating = 0;
+  for (std::size_t i = 0; i < c.compute_us.size(); ++i) {
+    if (c.compute_us[i] <= threshold) continue;
+    allocating += c.allocated[i] ? 1 : 0;
+    const auto bin = static_cast<std::size_t>(c.due_s[i] / 0.5);
+    if (bins.size() <= bin) bins.resize(bin + 1, 0);
+    ++bins[bin];
+  }
+  std::cout << "  " << c.name << " frames over " << threshold << " us by half second into a block:";
+  for (int n : bins) std::cout << " " << n;
+  std::cout << " (" << allocating << " of them allocating)\n";
+}
+
 // Prints the figures; true when every criterion holds.
 bool report(const Options& o, const Condition& quiet, const Condition& loaded,
             const Condition& twin, const PeerTotals& t, const debug::DebugServer& server,
@@ -437,6 +459,13 @@ bool report(const Options& o, const Condition& quiet, const Condition& loaded,
   std::cout << "  after each block's first 1.5 s (attached, not attaching): loaded p99 / "
             << reference.name << " p99 = " << loaded.steady_p99() / reference.steady_p99() << " ("
             << loaded.steady_p99() << " / " << reference.steady_p99() << " us)\n";
+  if (o.twin) {  // the tail over both conditions' pooled p99, where it falls in time
+    std::vector<double> both = loaded.compute_us;
+    both.insert(both.end(), twin.compute_us.begin(), twin.compute_us.end());
+    const double threshold = percentiles(both, {0.99})[0];
+    print_tail_by_time(loaded, threshold);
+    print_tail_by_time(twin, threshold);
+  }
   std::cout << "  honest streams: " << t.complete << " of " << t.streams << " complete, "
             << t.received << " samples received, " << t.dropped << " dropped (counted)\n"
             << "  garbage flood: " << t.flood_bytes << " bytes over " << t.flood_connections
