@@ -145,7 +145,8 @@ void ViewBridge::observe_keys() {
   } catch (const Error&) {
     walk_plan_ = false;  // no scene, or a robot that cannot say
   }
-  if (kinematic()) keys.insert(keys.end(), {kJointsKey, kAnglesKey, kModulesKey, kTimesKey});
+  if (kinematic()) keys.insert(keys.end(), {kJointsKey, kAnglesKey});
+  if (kinematic() && !times_pages_.empty()) keys.insert(keys.end(), {kModulesKey, kTimesKey});
   if (kinematic() && walk_plan_) keys.push_back(kWalkPlanKey);  // streamed with the frame
   interpreter_.set_observed_extra(std::move(keys));
 }
@@ -210,9 +211,11 @@ std::optional<Eigen::Isometry3d> ViewBridge::logged_torso() {
   }
 }
 
-// Each module's time in the last frame, ms (the runtime's ModuleTimes); {} if unknown.
+// Each module's time in the last frame, ms (the runtime's ModuleTimes); {} if unknown or no page
+// shows them.
 Json ViewBridge::module_times() {
   Json times = Json::object();
+  if (times_pages_.empty()) return times;
   try {
     const std::vector<double> ns = numbers(value(kTimesKey));
     const std::vector<std::string> names = strings(value(kModulesKey));

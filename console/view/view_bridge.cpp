@@ -72,6 +72,7 @@ void ViewBridge::poll() {
         break;
       case ClientEvent::Kind::Left:
         read_only_.erase(e.client);
+        if (times_pages_.erase(e.client) > 0 && times_pages_.empty()) observe_keys();
         break;
     }
   }
@@ -120,6 +121,15 @@ void ViewBridge::on_message(std::uint64_t client, const std::string& text) {
   if (const auto* w = std::get_if<WatchRequest>(&r)) return watch(client, *w);
   if (const auto* g = std::get_if<GetRequest>(&r)) return get(client, *g);
   if (std::holds_alternative<TreeRequest>(r)) return server_.send(client, dump(tree()));
+  if (const auto* t = std::get_if<TimesRequest>(&r)) {
+    const bool before = !times_pages_.empty();
+    if (t->on)
+      times_pages_.insert(client);
+    else
+      times_pages_.erase(client);
+    if (before != !times_pages_.empty()) observe_keys();
+    return;
+  }
   server_.send(client, dump({{"type", "error"}, {"error", "ws message: already authenticated"}}));
 }
 

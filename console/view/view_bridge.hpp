@@ -93,6 +93,9 @@ class ViewBridge {
   std::string mode_;
   WebServer server_;
   std::set<std::uint64_t> read_only_;
+  // Pages showing module times: only then does a robot stream its ModuleTimes (the names and
+  // times of every module, copied by its loop each frame).
+  std::set<std::uint64_t> times_pages_;
   std::vector<std::string> watch_keys_;
   std::deque<std::vector<double>> rows_;  // samples since the last frame message
   std::uint64_t seq_ = 0;

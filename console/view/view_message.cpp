@@ -111,7 +111,7 @@ ViewRequest decode_view_message(std::string_view text) {
   if (!m.is_object()) fail("expected a JSON object");
   const auto op_it = m.find("op");
   if (op_it == m.end() || !op_it->is_string())
-    fail("expected \"op\" (cmd, watch, tree, get, auth)");
+    fail("expected \"op\" (cmd, watch, tree, get, times, auth)");
   const std::string& op = op_it->get_ref<const std::string&>();
   if (op == "cmd") {
     const CmdRequest c{id_member(m), text_member(m, "line", kMaxLine)};
@@ -120,8 +120,13 @@ ViewRequest decode_view_message(std::string_view text) {
   if (op == "watch") return watch(m);
   if (op == "tree") return TreeRequest{};
   if (op == "get") return GetRequest{id_member(m), text_member(m, "key", kMaxKey)};
+  if (op == "times") {
+    const auto on = m.find("on");
+    if (on == m.end() || !on->is_boolean()) fail("\"on\" should be true or false");
+    return TimesRequest{on->get<bool>()};
+  }
   if (op == "auth") return AuthRequest{hex_member(m, "nonce"), hex_member(m, "proof")};
-  fail("unknown op \"" + printable(op) + "\" (expected cmd, watch, tree, get, auth)");
+  fail("unknown op \"" + printable(op) + "\" (expected cmd, watch, tree, get, times, auth)");
 }
 
 }  // namespace stride::view

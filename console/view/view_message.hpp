@@ -23,12 +23,16 @@ struct GetRequest {
   std::int64_t id = 0;
   std::string key;
 };
+struct TimesRequest {  // the page shows module times (its module graph): frames carry them
+  bool on = false;
+};
 struct AuthRequest {
   std::string nonce;  // hex, as sent
   std::string proof;  // hex
 };
 
-using ViewRequest = std::variant<CmdRequest, WatchRequest, TreeRequest, GetRequest, AuthRequest>;
+using ViewRequest =
+    std::variant<CmdRequest, WatchRequest, TreeRequest, GetRequest, TimesRequest, AuthRequest>;
 
 // Throws stride::Error("ws message: ...") naming what was expected; never anything else.
 ViewRequest decode_view_message(std::string_view text);

@@ -73,8 +73,13 @@ TEST(ViewMessage, DecodesEveryOpAndNamesWhatIsWrong) {
             "ws message: \"id\" should be an integer");
   EXPECT_EQ(error(R"({"op":"cmd","id":1,"line":"a\nb"})"),
             "ws message: \"line\" holds a control character");
+  EXPECT_TRUE(std::get<view::TimesRequest>(decode_view_message(R"({"op":"times","on":true})")).on);
+  EXPECT_FALSE(
+      std::get<view::TimesRequest>(decode_view_message(R"({"op":"times","on":false})")).on);
+  EXPECT_EQ(error(R"({"op":"times","on":1})"), "ws message: \"on\" should be true or false");
+  EXPECT_EQ(error(R"({"op":"times"})"), "ws message: \"on\" should be true or false");
   EXPECT_EQ(error(R"({"op":"fly"})"),
-            "ws message: unknown op \"fly\" (expected cmd, watch, tree, get, auth)");
+            "ws message: unknown op \"fly\" (expected cmd, watch, tree, get, times, auth)");
   EXPECT_EQ(error(std::string(20, '[') + std::string(20, ']')),
             "ws message: nested deeper than 16");
   std::string many = R"({"op":"watch","keys":[)";

@@ -68,6 +68,7 @@ conn.on("hello", (m) => {
   player.setHello(m);
   store.mode = m.mode;
   store.sendWatch(); // after a reconnect, the bridge forgot the list
+  sendTimes();
   refreshTree();
 });
 conn.on("scene", (m) => {
@@ -166,12 +167,17 @@ $("plot-pause").onclick = () => {
   $("plot-pause").classList.toggle("on", plots.paused);
 };
 $("tree-refresh").onclick = refreshTree;
+// Module times cost a robot's loop a copy every frame: asked for only while the graph shows.
+function sendTimes() {
+  conn.send({ op: "times", on: !$("panel-modules").hidden });
+}
 for (const tab of document.querySelectorAll(".tabs button")) {
   tab.onclick = () => {
     for (const t of document.querySelectorAll(".tabs button")) {
       t.classList.toggle("on", t === tab);
       $(t.dataset.panel).hidden = t !== tab;
     }
+    sendTimes();
   };
 }
 
