@@ -31,6 +31,13 @@ def test(stride, d):
                                  ".map(g => g.dataset.module)")
         check(sorted(names) == sorted(drawn), f"modules {sorted(names)} but drawn {sorted(drawn)}")
         edges, total = check_edges_of(d, "PatternWalk")
+        # Module times come only while the graph shows (the tab asked for them): a step shows them.
+        console(d, "step 12")
+        ms_js = ("const e = document.querySelector('#module-graph g.module[data-module=\"PatternWalk\"] .module-ms');"
+                 " return e ? e.textContent : null")
+        wait_js(d, f"(() => {{ {ms_js} }})() && /[1-9].* (ms|\u00b5s)$/.test((() => {{ {ms_js} }})())", 15,
+                "PatternWalk's time (non-zero)")
+        ms_text = d.execute_script(ms_js)
         before = provider_in_tree(d)
         values = d.execute_script("return [...document.querySelector(arguments[0]).options].map(o => o.value)", SEL)
         check(before in values and "HipStrategy" in values, f"providers offered: {values}")
@@ -51,7 +58,7 @@ def test(stride, d):
         choose(d, SEL, "default")
         wait_js(d, f"strideView.tree.representations.find(r => r.name === '{REP}').provider === '{before}'", 15,
                 f"mr default returns to {before}")
-        print(f"{len(names)} modules drawn, {total} edges, PatternWalk's: {edges}; {REP}: {before} -> {swap_to} -> default ({before})")
+        print(f"{len(names)} modules drawn, {total} edges, PatternWalk's: {edges} ({ms_text}); {REP}: {before} -> {swap_to} -> default ({before})")
 
 
 if __name__ == "__main__":
