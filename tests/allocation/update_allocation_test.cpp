@@ -74,6 +74,8 @@ std::vector<Case> cases() {
       {"PositionBalancePushed", push, "", {{"JointRequest", "PositionBalance"}}, 0.1, 2.5, 25},
       // A push from behind 1.2 s into the walk that takes a recovery step.
       {"PushRecoveryWalkPushed", recovery, "", {}, 0.1, 4.0, 35, 3.2},
+      // Walk requests: starting, forward, sideways, turning (its schedule's first 12 s).
+      {"RequestWalkSteered", "scenes/walking/requests/steer.xml", "", {}, 0.1, 12.0},
   };
 }
 
