@@ -18,7 +18,9 @@
 
 namespace stride::behaviours {
 
-walking::PatternParameters request_walk_pattern(const RequestWalkParameters& r) {
+namespace {
+// The pattern's fields as PatternWalk's parameters hold them (the rest stay the preset's).
+WalkParameters pattern_fields(const RequestWalkParameters& r) {
   WalkParameters w;
   w.preset = r.preset;
   w.T_stride = r.T_stride;
@@ -28,7 +30,12 @@ walking::PatternParameters request_walk_pattern(const RequestWalkParameters& r) 
   w.z_max = r.z_max;
   w.d_0 = r.d_0;
   w.H_foot = r.H_foot;
-  return walk_pattern_parameters(w);  // throws naming the parameter
+  return w;
+}
+}  // namespace
+
+walking::PatternParameters request_walk_pattern(const RequestWalkParameters& r) {
+  return walk_pattern_parameters(pattern_fields(r));  // throws naming the parameter
 }
 
 walking::StepLimits request_walk_limits(const RequestWalkParameters& r) {
@@ -39,10 +46,8 @@ walking::StepLimits request_walk_limits(const RequestWalkParameters& r) {
 namespace {
 
 bool same_pattern_fields(const RequestWalkParameters& a, const RequestWalkParameters& b) {
-  const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
-  return a.preset == b.preset && a.early_share == b.early_share && same(a.T_stride, b.T_stride) &&
-         same(a.tau_dsp, b.tau_dsp) && same(a.A_l, b.A_l) && same(a.z_min, b.z_min) &&
-         same(a.z_max, b.z_max) && same(a.d_0, b.d_0) && same(a.H_foot, b.H_foot);
+  return a.early_share == b.early_share &&
+         same_walk_parameters(pattern_fields(a), pattern_fields(b));
 }
 
 WalkPlan plan_of(const walking::WalkSample& s, const walking::OnlineWalk& walk) {
