@@ -1,6 +1,7 @@
 #include "behaviours/module_catalogue.hpp"
 
 #include "behaviours/balance/modules/balance_modules.hpp"
+#include "behaviours/identify/excitation_module.hpp"
 #include "behaviours/joint_state/joint_velocities.hpp"
 #include "behaviours/landing/landing_control.hpp"
 #include "behaviours/landing/landing_modules.hpp"
@@ -16,6 +17,7 @@ namespace stride::behaviours {
 void register_all_modules(ModuleRegistry& registry) {
   register_nao_io_modules(registry);
   register_stand(registry);
+  register_excitation(registry);
   register_walking_modules(registry);
   register_posture_modules(registry);
   register_balance_modules(registry);

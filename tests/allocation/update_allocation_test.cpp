@@ -76,6 +76,13 @@ std::vector<Case> cases() {
       {"PushRecoveryWalkPushed", recovery, "", {}, 0.1, 4.0, 35, 3.2},
       // Walk requests: starting, forward, sideways, turning (its schedule's first 12 s).
       {"RequestWalkSteered", "scenes/walking/requests/steer.xml", "", {}, 0.1, 12.0},
+      // The held chirp past the move to its base posture (1.5 s) into the excitation.
+      {"ExcitationRobotConfig",
+       "scenes/identify/held_chirp.xml",
+       "scenes/robots/nao/identify/held_chirp.xml",
+       {},
+       0.1,
+       3.0},
   };
 }
 
