@@ -34,7 +34,7 @@ void walk_notes(const WalkParameters& w, std::vector<std::string>& notes) {
   }
 }
 
-// Eq. 5.14: tau = -K_D (e' + lambda e). A tracking error of 0.1 rad and 1 rad/s, which a swing
+// tau = -K_D (e' + lambda e) (Eq. 5.14). A tracking error of 0.1 rad and 1 rad/s, which a swing
 // leg sees at its start, must not ask for more torque than a motor has, with the same 2x margin
 // the swing-leg study flags measured torques with.
 void swing_leg_notes(const SwingLegTrackingParameters& p, std::vector<std::string>& notes) {
@@ -61,8 +61,9 @@ void balance_gain_notes(double kp, double kd, std::vector<std::string>& notes) {
                     "(plausible up to " + g(kMaxKd) + "; Fig. 7.5 uses 12)");
 }
 
-// Eqs. 4.10-4.15 add kp x the torso's tilt (and kd x its rate) to the leg joints: the thesis
-// tuned 0.28-0.40 and -0.05 to -0.06 s; more than twice the tilt overturns the correction.
+// The posture laws (Eq. 4.10, Eq. 4.11, Eq. 4.14, Eq. 4.15) add kp x the torso's tilt (and kd x
+// its rate) to the leg joints: the thesis tuned 0.28-0.40 and -0.05 to -0.06 s; more than twice the
+// tilt overturns the correction.
 void posture_gain_notes(const PostureGains& k, std::vector<std::string>& notes) {
   const std::pair<const char*, double> kp[] = {{"kp_pitch", k.kp_pitch}, {"kp_roll", k.kp_roll}};
   const std::pair<const char*, double> kd[] = {{"kd_pitch", k.kd_pitch}, {"kd_roll", k.kd_roll}};

@@ -16,7 +16,8 @@ AnkleOpenLoopResult ankle_open_loop(const BalanceParams& p, const ComState& s0) 
   r.zmp = std::clamp(r.capture_point, p.zmp_min, p.zmp_max);
   r.recoverable = r.capture_point >= p.zmp_min && r.capture_point <= p.zmp_max;  // Eq. 7.13
   r.forcing = ankle_forcing(r.zmp, w);
-  r.final_x = r.recoverable ? -r.forcing / (w * w) : std::copysign(INFINITY, r.capture_point);
+  r.final_x =  // Eq. 7.14 as t grows
+      r.recoverable ? -r.forcing / (w * w) : std::copysign(INFINITY, r.capture_point);
   return r;
 }
 
@@ -47,8 +48,8 @@ ClosedLoopBoundaries closed_loop_boundaries(const BalanceParams& p, const PdGain
   if (!(k.kd > 0))
     throw Error("closed-loop boundaries: kd must be positive (lines a, b need k1 > 0)");
   ClosedLoopBoundaries c;
-  c.k1 = k.kd * p.z_cm / p.g;
-  c.k2 = 1 + k.kp * p.z_cm / p.g;
+  c.k1 = k.kd * p.z_cm / p.g;      // Eq. 7.20's k1
+  c.k2 = 1 + k.kp * p.z_cm / p.g;  // and k2
   c.l1 = ankle_front_boundary(p);
   c.l2 = ankle_back_boundary(p);
   // Eq. 7.20 solved for xdot at the two ZMP borders.
@@ -62,7 +63,7 @@ ClosedLoopBoundaries closed_loop_boundaries(const BalanceParams& p, const PdGain
 }
 
 ComState pd_state(const PdGains& k, const ComState& s0, double x_set, double t) {
-  // e = x - x_set obeys e'' + kd e' + kp e = 0; the root pattern picks the closed form.
+  // Eq. 7.16 in closed form: e = x - x_set obeys e'' + kd e' + kp e = 0; the root pattern picks it.
   const double e0 = s0.x - x_set, de0 = s0.v;
   const double disc = k.kd * k.kd / 4 - k.kp;
   const double a = -k.kd / 2;
@@ -92,11 +93,12 @@ ClosedLoopRun simulate_closed_loop(const BalanceParams& p, const PdGains& k, con
     throw Error("closed-loop simulation: dt and duration must be > 0");
   const double w2 = p.omega() * p.omega();
   auto applied_zmp = [&](const OdeState<2>& y) {
-    return std::clamp(pd_demanded_zmp(p, k, {y[0], y[1]}, x_set), p.zmp_min, p.zmp_max);
+    return std::clamp(pd_demanded_zmp(p, k, {y[0], y[1]}, x_set), p.zmp_min,
+                      p.zmp_max);  // Eq. 7.19
   };
   const std::function<OdeState<2>(double, const OdeState<2>&)> rhs = [&](double,
                                                                          const OdeState<2>& y) {
-    return OdeState<2>{y[1], w2 * (y[0] - applied_zmp(y))};  // Eq. 7.1 with Eq. 7.19
+    return OdeState<2>{y[1], w2 * (y[0] - applied_zmp(y))};  // Eq. 7.1, the ZMP of Eq. 7.19
   };
   ClosedLoopRun run;
   OdeState<2> y{s0.x, s0.v};

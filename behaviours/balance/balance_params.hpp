@@ -29,9 +29,10 @@ struct ComState {
   double v = 0.0;
 };
 
-// x + xdot / omega: the quantity every boundary of Ch. 7 is written in (Eqs. 7.13, 7.30, 7.37).
+// x + xdot / omega: the quantity every boundary of Ch. 7 is written in (Eq. 7.13,
+// Eq. 7.30 and Eq. 7.37).
 inline double capture_point(const ComState& s, double omega) {
-  return s.x + s.v / omega;
+  return s.x + s.v / omega;  // Eq. 7.13's left side
 }
 
 // Throws stride::Error naming the first field that makes the models meaningless.

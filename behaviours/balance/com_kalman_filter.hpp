@@ -1,5 +1,5 @@
 #pragma once
-// CoM state estimation with the 3D-LIPM Kalman filter (thesis Sec. 7.2, Eqs. 7.1-7.4).
+// CoM state estimation with the 3D-LIPM Kalman filter (thesis Sec. 7.2).
 #include <Eigen/Dense>
 
 namespace stride::balance {
@@ -9,12 +9,13 @@ using ComFilterState = Eigen::Matrix<double, 6, 1>;
 using ComFilterCovariance = Eigen::Matrix<double, 6, 6>;
 
 struct ComFilterModel {
-  Eigen::Matrix<double, 6, 6> A;  // Eq. 7.3
-  Eigen::Matrix<double, 6, 2> B;  // Eq. 7.4
+  Eigen::Matrix<double, 6, 6> A;  // of Eq. 7.3
+  Eigen::Matrix<double, 6, 2> B;  // of Eq. 7.4
   Eigen::Matrix<double, 6, 6> Q;  // process noise covariance
 };
 
-// Eqs. 7.3-7.4 for CoM height z0, gravity g and time step T; Q = diag of the given std-devs^2.
+// A and B (Eq. 7.3, Eq. 7.4) for CoM height z0, gravity g and time step T; Q = diag of the given
+// std-devs^2.
 ComFilterModel com_filter_model(double z0, double g, double T, double sigma_position,
                                 double sigma_velocity, double sigma_zmp);
 

@@ -14,7 +14,7 @@ BangBangPlan plan_combined(const BalanceParams& p, const ComState& s0) {
   plan.capture_point = capture_point(s0, p.omega());
   const double xi = plan.capture_point;
   plan.zmp = std::clamp(xi, p.zmp_min, p.zmp_max);
-  const double shift = xi - plan.zmp;  // what the hip has to add, Eq. 7.36
+  const double shift = xi - plan.zmp;  // Eq. 7.36: what the hip has to add
   const HipBoundaries h = hip_boundaries(p);
   plan.recoverable = shift >= h.backward && shift <= h.forward;
   if (shift == 0.0) {

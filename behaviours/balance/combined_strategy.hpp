@@ -1,10 +1,10 @@
 #pragma once
-// Combined ankle + hip strategy with the bang-bang hip torque (thesis Sec. 7.5.1, Eqs. 7.31-7.37).
+// Combined ankle + hip strategy with the bang-bang hip torque (thesis Sec. 7.5.1).
 #include "behaviours/balance/hip_strategy.hpp"
 
 namespace stride::balance {
 
-// Eq. 7.37: capture-point interval recoverable with the ZMP at a sole border plus the hip.
+// Capture-point interval (Eq. 7.37) recoverable with the ZMP at a sole border plus the hip.
 struct CombinedBoundaries {
   double backward = 0.0;  // zmp_min + backward hip shift
   double forward = 0.0;   // zmp_max + forward hip shift

@@ -18,7 +18,7 @@ double hip_capture_shift(const BalanceParams& p, const BangBang& b) {
 std::optional<BangBang> limit_bang_bang(const BalanceParams& p, double tau, double theta_max) {
   const double alpha = tau / p.inertia;  // HAT angular acceleration
   const double dth = p.theta_dot0;
-  // alpha t1^2 + 2 dth t1 + (dth^2 / (2 alpha) + theta0 - theta_max) = 0 (from Eqs. 7.28, 7.29)
+  // alpha t1^2 + 2 dth t1 + (dth^2 / (2 alpha) + theta0 - theta_max) = 0 (from Eq. 7.28, Eq. 7.29)
   const double radicand = dth * dth / 2 - alpha * (p.theta0 - theta_max);
   if (radicand < 0) return std::nullopt;
   const double root = std::copysign(std::sqrt(radicand), alpha);  // the root with t1 >= 0
@@ -30,11 +30,11 @@ std::optional<BangBang> limit_bang_bang(const BalanceParams& p, double tau, doub
 
 std::optional<BangBang> bang_bang_for_shift(const BalanceParams& p, double tau, double shift) {
   const double w = p.omega();
-  const double c = p.inertia * p.theta_dot0 / tau;  // t2 - 2 t1, Eq. 7.28
+  const double c = p.inertia * p.theta_dot0 / tau;  // Eq. 7.28: t2 - 2 t1
   const double k = p.mass * p.g / tau * shift;
   const double radicand = std::exp(w * c) - 1 + k;
   if (radicand < 0) return std::nullopt;
-  // Solution after Eq. 7.28 with the '-' sign so that t1 >= 0.
+  // The solution after Eq. 7.28 with the '-' sign so that t1 >= 0.
   const double u = std::exp(w * c) - std::exp(w * c / 2) * std::sqrt(radicand);
   if (!(u > 0) || u > 1 + 1e-15) return std::nullopt;
   const double t1 = std::max(0.0, -std::log(u) / w);
@@ -97,6 +97,7 @@ HipModelState bang_bang_state(const BalanceParams& p, const ComState& s0, const 
   auto dramp = [&](double ts) { return t >= ts ? w * std::sinh(w * (t - ts)) : 0.0; };
   const double e0 = s0.x - plan.zmp;
   HipModelState s;
+  // Eq. 7.34 (Eq. 7.23 when the ZMP is 0) under the torque of Eq. 7.35
   s.x = e0 * std::cosh(w * t) + s0.v / w * std::sinh(w * t) + plan.zmp -
         gain * (ramp(0) - 2 * ramp(b.t1) + ramp(b.t2));
   s.v = e0 * w * std::sinh(w * t) + s0.v * std::cosh(w * t) -

@@ -1,12 +1,12 @@
 #pragma once
-// Hip strategy with the bang-bang hip torque profile (thesis Sec. 7.4, Eqs. 7.21-7.30, Alg. 2).
+// Hip strategy with the bang-bang hip torque profile (thesis Sec. 7.4, Alg. 2).
 #include <optional>
 
 #include "behaviours/balance/balance_params.hpp"
 
 namespace stride::balance {
 
-// Eq. 7.24: +tau on [0, t1), -tau on [t1, t2), 0 afterwards.
+// The torque of Eq. 7.24: +tau on [0, t1), -tau on [t1, t2), 0 afterwards.
 struct BangBang {
   double tau = 0.0;
   double t1 = 0.0;
@@ -14,18 +14,19 @@ struct BangBang {
 };
 double bang_bang_torque(const BangBang& b, double t);
 
-// Eq. 7.25: how far the profile moves the capture point, tau/(m g) (1 - 2e^{-w t1} + e^{-w t2}).
+// How far the profile (Eq. 7.25) moves the capture point, tau/(m g) (1 - 2e^{-w t1} + e^{-w t2}).
 double hip_capture_shift(const BalanceParams& p, const BangBang& b);
 
-// Eqs. 7.28-7.29 solved for t1, t2: the profile that stops the HAT exactly at theta_max.
-// Empty when the HAT cannot reach theta_max from (theta0, theta_dot0) with this torque sign.
+// The profile of Eq. 7.28 and Eq. 7.29 solved for t1, t2: the profile that stops the HAT exactly at
+// theta_max. Empty when the HAT cannot reach theta_max from (theta0, theta_dot0) with this torque
+// sign.
 std::optional<BangBang> limit_bang_bang(const BalanceParams& p, double tau, double theta_max);
 
-// Eq. 7.28 + the t1 formula after it: the profile whose capture shift equals `shift`.
+// The t1 formula after Eq. 7.28: the profile whose capture shift equals `shift`.
 // Empty when no t1 >= 0 exists (shift of the wrong sign or beyond what tau can ever give).
 std::optional<BangBang> bang_bang_for_shift(const BalanceParams& p, double tau, double shift);
 
-// Eq. 7.30: capture-point interval [backward, forward] recoverable by the hip alone.
+// Capture-point interval (Eq. 7.30) [backward, forward] recoverable by the hip alone.
 struct HipBoundaries {
   double backward = 0.0;
   double forward = 0.0;
@@ -45,8 +46,8 @@ struct BangBangPlan {
 // Algorithm 2: pure hip strategy (ankle unactuated, ZMP under the ankle).
 BangBangPlan plan_hip(const BalanceParams& p, const ComState& s0);
 
-// Full state of the CoM + HAT model at time t under a plan (closed form of Eqs. 7.23-7.27 and
-// of the combined-strategy trajectory after Eq. 7.35).
+// Full state of the CoM + HAT model at time t under a plan (closed form of Eq. 7.23,
+// Eq. 7.26 and Eq. 7.27, and of the combined-strategy trajectory, Eq. 7.34 under Eq. 7.35).
 struct HipModelState {
   double x = 0, v = 0;              // CoM
   double theta = 0, theta_dot = 0;  // HAT angle about the hip

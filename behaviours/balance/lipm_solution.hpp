@@ -7,15 +7,15 @@
 
 namespace stride::balance {
 
-// Eqs. 7.12 and 7.15: state at time t from s0 under constant f (f = -omega^2 x_zmp for the ankle).
+// State (Eq. 7.12, Eq. 7.15) at time t from s0 under constant f (f = -omega^2 x_zmp for the ankle).
 ComState lipm_state(const ComState& s0, double omega, double f, double t);
 
-// Constant forcing that keeps the ZMP at x_zmp (Eq. 7.11: f = -g x_zmp / z).
+// Constant forcing that keeps the ZMP at x_zmp (f = -g x_zmp / z).
 inline double ankle_forcing(double x_zmp, double omega) {
-  return -omega * omega * x_zmp;
+  return -omega * omega * x_zmp;  // Eq. 7.11
 }
 
-// Eq. 7.13: the ZMP at which the open-loop ankle strategy converges from s0.
+// The ZMP (Eq. 7.13) at which the open-loop ankle strategy converges from s0.
 inline double converging_zmp(const ComState& s0, double omega) {
   return capture_point(s0, omega);
 }

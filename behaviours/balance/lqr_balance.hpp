@@ -1,5 +1,5 @@
 #pragma once
-// LQR balance control of the combined ankle + hip model (thesis Sec. 7.5.2, Eqs. 7.38-7.39).
+// LQR balance control of the combined ankle + hip model (thesis Sec. 7.5.2, Eq. 7.38, Eq. 7.39).
 #include <Eigen/Dense>
 #include <vector>
 

@@ -23,7 +23,7 @@ struct CaptureInterval {
 struct Classification {
   Strategy strategy = Strategy::none;  // least effort first: ankle, then hip, then combined
   double capture_point = 0.0;
-  CaptureInterval ankle, hip, combined;  // Eqs. 7.13, 7.30, 7.37
+  CaptureInterval ankle, hip, combined;  // of Eq. 7.13, Eq. 7.30, Eq. 7.37
   bool ankle_recovers = false, hip_recovers = false, combined_recovers = false;
   AnkleOpenLoopResult ankle_result;
   BangBangPlan hip_plan, combined_plan;  // switching times t1, t2 for each

@@ -26,19 +26,19 @@ AdmittanceFilter::AdmittanceFilter(const Admittance& a, double period)
   require(std::isfinite(a.stiffness) && a.stiffness > 0, "stiffness", "a number > 0");
   require(std::isfinite(period) && period > 0, "period", "a time > 0");
   if (a.mass > 0) {
-    // Eq. 6.13: [e; e']' = [0 1; -K/M -B/M] [e; e'] + [0; 1/M] f. The exponential of the augmented
+    // [e; e']' = [0 1; -K/M -B/M] [e; e'] + [0; 1/M] f (Eq. 6.13). The exponential of the augmented
     // matrix [A b; 0 0] T holds Phi and Gamma together (zero-order hold on f).
     Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
     m(0, 1) = 1;
     m(1, 0) = -a.stiffness / a.mass;
     m(1, 1) = -a.damping / a.mass;
     m(1, 2) = 1 / a.mass;
-    const Eigen::Matrix3d e = (m * period).exp();
+    const Eigen::Matrix3d e = (m * period).exp();  // Eq. 6.13, exact over one period
     phi_ = e.topLeftCorner<2, 2>();
     gamma_ = e.topRightCorner<2, 1>();
   } else if (a.damping > 0) {
-    // Eq. 6.17 in the quasi-static balance B e' + K e = f: first order, time constant B / K.
-    const double decay = std::exp(-a.stiffness / a.damping * period);
+    // The quasi-static balance B e' + K e = f: first order, time constant B / K.
+    const double decay = std::exp(-a.stiffness / a.damping * period);  // Eq. 6.17 with f_e
     phi_ << decay, 0, 0, 0;
     gamma_ << (1 - decay) / a.stiffness, 0;
   } else {

@@ -1,8 +1,8 @@
 #pragma once
 // Landing impact control through joint positions (thesis Ch. 6 on a robot that takes positions,
 // its Sec. 8.2 future work): around each touch-down the landing sole's height and the ankle's
-// pitch and roll follow an admittance (Eq. 6.13 / 6.17) driven by the FSRs, then are handed back
-// to the walking pattern.
+// pitch and roll follow an admittance (Eq. 6.13, or Eq. 6.17 without mass) driven by the FSRs, then
+// are handed back to the walking pattern.
 //   LandingControl   PostureCorrectedRequest, ArmSwingRequest, WalkingJointRequest, FsrSensorData,
 //                    FrameInfo -> JointRequest, LandingControlState
 // It takes WalkingJointRequestAssembler's place (`mr JointRequest LandingControl`); a scene that

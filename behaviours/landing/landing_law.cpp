@@ -22,14 +22,14 @@ model::LegAngles impedance_torques(const ImpedanceGains& k, const SoleTarget& ta
   const Eigen::Isometry3d x = model::leg_fk(model::Side::Left, q);
   const model::Matrix6d j = model::leg_jacobian(model::Side::Left, q);
   const Vector6d xd = j * Eigen::Map<const Vector6d>(qd.data());  // sole twist [v; omega]
-  Vector6d wrench;  // Eq. 6.17's B (x'_d - x') + K (x_d - x)
+  Vector6d wrench;  // B (x'_d - x') + K (x_d - x) of Eq. 6.17
   wrench.head<3>() = k.stiffness.cwiseProduct(target.pose.translation() - x.translation()) +
                      k.damping.cwiseProduct(target.velocity - xd.head<3>());
   const Eigen::AngleAxisd rot(target.pose.linear() * x.linear().transpose());
   wrench.tail<3>() = k.rot_stiffness * rot.angle() * rot.axis() - k.rot_damping * xd.tail<3>();
   const Vector6d tau = j.transpose() * wrench;
   model::LegAngles out{};
-  for (int i = 0; i < 6; ++i) out[i] = tau[i] + gravity[i];
+  for (int i = 0; i < 6; ++i) out[i] = tau[i] + gravity[i];  // Eq. 6.17
   return out;
 }
 

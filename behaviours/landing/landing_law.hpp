@@ -1,6 +1,7 @@
 #pragma once
 // Thesis Ch. 6's landing foot as pure functions: the sole's planned descent, the impedance law of
-// Eq. 6.17 and the gravity term g(theta) it adds, for the NAO's left leg in the torso frame.
+// The impedance law of Eq. 6.17 and the gravity term g(theta) it adds, for the NAO's left leg in
+// the torso frame.
 #include <array>
 #include <vector>
 
@@ -28,7 +29,7 @@ struct ImpedanceGains {
   double rot_damping = 0.3;                    // N m s/rad
 };
 
-// Eq. 6.17: tau = J^T (B (x'_d - x') + K (x_d - x)) + g(theta); `q`, `qd` the leg's six joints
+// tau = J^T (B (x'_d - x') + K (x_d - x)) + g(theta) (Eq. 6.17); `q`, `qd` the leg's six joints
 // (HipYawPitch first), `gravity` the g(theta) term (leg_gravity_torques).
 model::LegAngles impedance_torques(const ImpedanceGains& gains, const SoleTarget& target,
                                    const model::LegAngles& q, const model::LegAngles& qd,

@@ -1,7 +1,8 @@
 #pragma once
 // Thesis Ch. 6 as modules: the left sole set down along a planned descent, by the position-
 // controlled leg (LandingPosition: leg IK, the servos' position loop) or by the impedance law of
-// Eq. 6.17 in torque mode (LandingImpedance). Every other joint holds its first-frame angle.
+// the law of Eq. 6.17 in torque mode (LandingImpedance). Every other joint holds its first-frame
+// angle.
 //   LandingPosition   FrameInfo, JointSensorData -> JointRequest
 //   LandingImpedance  FrameInfo, JointSensorData, JointVelocities, InertialSensorData
 //                     -> JointRequest

@@ -17,7 +17,8 @@ double support_yaw_moment(const ArmSwingModel& m, double swing_leg_acc, double b
 double arm_displacement_gain(const ArmSwingModel& m) {
   const double d0 = m.foot_half_distance;
   const double d1 = m.arm_half_distance;
-  return 2 * m.swing_leg_mass * d0 /  // Eqs. 4.19-4.20
+  // Eq. 4.19 without the body term, integrated twice into the gain of Eq. 4.20
+  return 2 * m.swing_leg_mass * d0 /
          (m.support_side_arm_mass * (d1 - d0) + m.swing_side_arm_mass * (d0 + d1));
 }
 

@@ -16,15 +16,16 @@ struct ArmSwingModel {
   double arm_com_distance = 0;       // d_a, m (shoulder joint to arm CoM)
 };
 
-// Eq. 4.18: yaw moment about O from the swing leg, the upper body (mass m_b at distance d) and
+// Yaw moment (Eq. 4.18) about O from the swing leg, the upper body (mass m_b at distance d) and
 // the arms, each from its forward acceleration.
 double support_yaw_moment(const ArmSwingModel& m, double swing_leg_acc, double body_mass,
                           double body_acc, double body_distance, double arm_acc);
 
-// Eq. 4.19 with the body term neglected, integrated twice (Eq. 4.20): x_a = gain * x_s.
+// The arm acceleration of Eq. 4.19 with the body term neglected, integrated twice (Eq. 4.20):
+// x_a = gain * x_s.
 double arm_displacement_gain(const ArmSwingModel& m);
 
-// Eq. 4.21: the shoulder pitch angle that moves the arm CoM forward by x_a (asin argument
+// The shoulder pitch angle (Eq. 4.21) that moves the arm CoM forward by x_a (asin argument
 // clamped to [-1, 1]); forward arm motion is a negative change of the robot's shoulder pitch.
 double arm_swing_angle(double arm_displacement, double arm_com_distance);
 

@@ -19,7 +19,7 @@
 
 namespace stride::behaviours {
 
-inline constexpr double kJointSignOfCorrection = 1.0;  // Eqs. 4.10-4.11, 4.14-4.15
+inline constexpr double kJointSignOfCorrection = 1.0;  // the + of Eq. 4.10 and the others
 
 struct PostureGains {
   double kp_pitch = 0;  // K_p1
@@ -29,14 +29,15 @@ struct PostureGains {
 };
 
 // Desired or measured torso state in the order of Eq. 4.5: [pitch, roll, pitch_rate, roll_rate].
-// Returns (Delta theta, Delta phi) of Eqs. 4.8-4.9 (hip) = Eqs. 4.12-4.13 (ankle), thesis sign.
+// Returns (Delta theta, Delta phi) of Eq. 4.8 and Eq. 4.9 (hip), the same as the ankle's
+// Eq. 4.12 and Eq. 4.13, thesis sign.
 Eigen::Vector2d posture_correction(const PostureGains& gains, const Eigen::Vector4d& desired,
                                    const Eigen::Vector4d& measured);
 
 enum class PostureJoints { Hip, Ankle };
 
-// Eqs. 4.10-4.11 (hip) or 4.14-4.15 (ankle): adds the correction to both legs' pitch and roll
-// joints of `position` (LoLA order).
+// Adds the correction to both legs' pitch and roll joints of `position` (LoLA order): Eq. 4.10
+// and Eq. 4.11 (hip) or Eq. 4.14 and Eq. 4.15 (ankle).
 void apply_posture_correction(PostureJoints joints, const Eigen::Vector2d& correction,
                               std::array<double, hal::kNumJoints>& position);
 

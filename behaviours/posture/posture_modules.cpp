@@ -28,8 +28,8 @@ class GyroCalibration final : public Module {
     const Eigen::Vector2d measured = inertial_.gyro.head<2>();
     if (!started_) out_.offset = initial_gyro_offset(measured, params_.start_at_first_sample);
     started_ = true;
-    out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eqs. 4.1-4.2
-    out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eqs. 4.3-4.4
+    out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eq. 4.1, Eq. 4.2
+    out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eq. 4.3, Eq. 4.4
   }
 
  private:
@@ -85,7 +85,7 @@ class TorsoStateEstimator final : public Module {
   bool started_ = false;
 };
 
-// Hip (Eqs. 4.8-4.11) or ankle (Eqs. 4.12-4.15) strategy on the walking joint targets.
+// Hip or ankle strategy (Sec. 4.3.3) on the walking joint targets.
 template <PostureJoints Joints>
 class PostureStrategy final : public Module {
  public:
@@ -115,7 +115,8 @@ class PostureStrategy final : public Module {
   const TorsoState& torso_;
   const PostureStrategyParameters<Joints>& params_;
   PostureCorrectedRequest& out_;
-  DebugRequest debug_;  // the corrections of Eqs. 4.8-4.9 / 4.12-4.13 and the torso they answer
+  DebugRequest debug_;  // the corrections (Eq. 4.8 and Eq. 4.9, or Eq. 4.12 and Eq. 4.13) and the
+                        // torso they answer
 };
 
 // Passes the walking targets through: the "no posture control" runs of Sec. 4.3.4.

@@ -30,8 +30,8 @@ void assemble_walking_request(const std::array<double, hal::kNumJoints>& positio
 
 struct GyroCalibrationParameters {
   double alpha = 0.001;  // Sec. 4.3.1
-  // C starts at the first raw sample, as if the robot had stood long enough for Eqs. 4.1-4.2 to
-  // settle (1/alpha = 10 s at 10 ms); false starts it at 0.
+  // C starts at the first raw sample, as if the robot had stood long enough for the offset
+  // of Eq. 4.1 and Eq. 4.2 to settle (1/alpha = 10 s at 10 ms); false starts it at 0.
   bool start_at_first_sample = true;
 
   static constexpr std::string_view kTypeName = "GyroCalibrationParameters";

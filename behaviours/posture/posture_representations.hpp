@@ -12,8 +12,8 @@ namespace stride {
 
 // Gyro rates about the torso x (roll) and y (pitch) axes with the running offset removed.
 struct CalibratedGyro {
-  Eigen::Vector2d rate = Eigen::Vector2d::Zero();    // Eqs. 4.3-4.4
-  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // (C_x, C_y) of Eqs. 4.1-4.2
+  Eigen::Vector2d rate = Eigen::Vector2d::Zero();    // calibrated, of Eq. 4.3 and Eq. 4.4
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // (C_x, C_y) of Eq. 4.1 and Eq. 4.2
 
   static constexpr std::string_view kTypeName = "CalibratedGyro";
   static constexpr auto fields() {
@@ -48,8 +48,8 @@ struct TorsoState {
 struct PostureCorrectedRequest {
   std::array<double, hal::kNumJoints> position{};
   std::array<double, hal::kNumJoints> stiffness{};
-  double pitch_correction = 0;  // Delta theta of Eq. 4.8 / 4.12, thesis sign
-  double roll_correction = 0;   // Delta phi of Eq. 4.9 / 4.13, thesis sign
+  double pitch_correction = 0;  // Delta theta of Eq. 4.8 or Eq. 4.12, thesis sign
+  double roll_correction = 0;   // Delta phi of Eq. 4.9 or Eq. 4.13, thesis sign
 
   static constexpr std::string_view kTypeName = "PostureCorrectedRequest";
   static constexpr auto fields() {

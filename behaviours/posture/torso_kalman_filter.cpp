@@ -19,12 +19,12 @@ TorsoMatrix torso_transition(double period) {
 
 void torso_kalman_step(TorsoKalmanFilter& f, const TorsoMatrix& a, const TorsoVector& q_diagonal,
                        const TorsoVector& r_diagonal, const TorsoVector& y) {
-  // Eq. 4.7 with C = I, so C drops out of steps 3-5.
-  const TorsoVector x_prior = a * f.x;  // step 1
+  // C = I in the measurement model y_k = C x_k, so C drops out of steps 3-5.
+  const TorsoVector x_prior = a * f.x;  // Eq. 4.5 with u_k = 0: step 1
   const TorsoMatrix p_prior = a * f.p * a.transpose() + TorsoMatrix(q_diagonal.asDiagonal());  // 2
   const TorsoMatrix s = p_prior + TorsoMatrix(r_diagonal.asDiagonal());
   f.gain = p_prior * s.inverse();                      // step 3
-  f.x = x_prior + f.gain * (y - x_prior);              // step 4
+  f.x = x_prior + f.gain * (y - x_prior);              // Eq. 4.7 in y - C x: step 4
   f.p = (TorsoMatrix::Identity() - f.gain) * p_prior;  // step 5
 }
 

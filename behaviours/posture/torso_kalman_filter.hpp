@@ -18,7 +18,7 @@ struct TorsoKalmanFilter {
 // P_{0|0} = L * I; the thesis uses L = 1000 because the starting posture is uncertain.
 TorsoKalmanFilter initial_torso_filter(double initial_variance);
 
-// Eq. 4.6: angles integrate the rates over one period T.
+// Angles integrate the rates over one period T (Eq. 4.6).
 TorsoMatrix torso_transition(double period);
 
 // One predict/update cycle (the thesis' five steps) with diagonal Q and R and measurement y.

@@ -119,7 +119,8 @@ class PushRecoveryWalk final : public Module {
                state_.lateral == PushResponse::step ? xi.y() : 0.0});
   }
 
-  // Eqs. 7.24-7.30 (hip) or 7.35-7.37 (combined, and behind a step) from the deviation.
+  // The hip's profile (Eq. 7.24, bounded by Eq. 7.30) or the combined one (Eq. 7.35, bounded
+  // by Eq. 7.37; also behind a step) from the deviation.
   void start_hat_excursion(const balance::BalanceParams& p, const balance::ComState& dev) {
     const PushResponse x = state_.sagittal;
     if (excursion_ || !params_.recovery.hip) return;

@@ -6,7 +6,7 @@
 // with follow_support, origin under the stance sole) minus the plan's, held against the Ch. 7
 // boundaries (push_detector.hpp), switches in the balance response through joint positions:
 //   ankle      stance ankle offsets from the capture-point deviation (the CoP moves with it),
-//   hip        the bang-bang HAT excursion of Eqs. 7.24-7.27 on both hip pitch joints,
+//   hip        the bang-bang HAT excursion (Eq. 7.24, Eq. 7.26, Eq. 7.27) on both hip pitch joints,
 //   combined   both (Eq. 7.37),
 //   step       past the Ch. 7 boundaries: the swing foot lands nearer the capture point and the
 //              pattern is re-planned from there (AdjustedPattern), the waist lowered for reach.

@@ -35,24 +35,26 @@ SlidingTerms<N> sliding_terms(const JointVector<N>& q, const JointVector<N>& qd,
   SlidingTerms<N> t;
   t.qd_r = ref.qd - lambda * (q - ref.q);
   t.qdd_r = ref.qdd - lambda * (qd - ref.qd);
-  t.s = qd - t.qd_r;
+  t.s = qd - t.qd_r;  // Eq. 5.3
   return t;
 }
 
-// tau = Y a^ - K_D s (Eqs. 5.1, 5.2, 5.5), with Y = Y(q, q', q'_r, q''_r) of Eq. 5.4.
+// tau = Y a^ - K_D s (Eq. 5.1, Eq. 5.2, Eq. 5.5), with Y = Y(q, q', q'_r, q''_r) of Eq. 5.4.
 template <int N, int P>
 JointVector<N> adaptive_torque(const Eigen::Matrix<double, N, P>& y,
                                const Eigen::Matrix<double, P, 1>& a_hat, const SlidingTerms<N>& t,
                                double kd) {
+  // Eq. 5.5 in Y a^
+  // Eq. 5.1: tau = tau^ - K_D s
   return y * a_hat - kd * t.s;
 }
 
-// a^' = -Gamma Y^T s (Eq. 5.6).
+// a^' = -Gamma Y^T s.
 template <int N, int P>
 Eigen::Matrix<double, P, 1> adaptation_rate(const Eigen::Matrix<double, N, P>& y,
                                             const SlidingTerms<N>& t,
                                             const Eigen::Matrix<double, P, 1>& gamma) {
-  return -(gamma.asDiagonal() * (y.transpose() * t.s));
+  return -(gamma.asDiagonal() * (y.transpose() * t.s));  // Eq. 5.6
 }
 
 // tau = -K_P q~ - K_D q~' (Eq. 5.14) with the gains equivalent to -K_D s: K_P = Lambda K_D
@@ -60,7 +62,7 @@ Eigen::Matrix<double, P, 1> adaptation_rate(const Eigen::Matrix<double, N, P>& y
 template <int N>
 JointVector<N> pd_torque(const JointVector<N>& q, const JointVector<N>& qd,
                          const JointReference<N>& ref, double lambda, double kd) {
-  return -lambda * kd * (q - ref.q) - kd * (qd - ref.qd);
+  return -lambda * kd * (q - ref.q) - kd * (qd - ref.qd);  // Eq. 5.14 with Eq. 5.15's K_P
 }
 
 }  // namespace stride::swing_leg

@@ -16,7 +16,7 @@ struct PlanarLegPlant {
   Params a = model::planar_parameters(model::thesis_planar_leg());
 
   using Mat = Eigen::Matrix3d;
-  // H(q), and C(q, q') q' + g(q) (Eq. 5.2's plant, true parameters).
+  // H(q), and C(q, q') q' + g(q) (the plant of Eq. 5.2, true parameters).
   void dynamics(const Vec& q, const Vec& qd, Mat& h, Vec& bias) const {
     h = model::planar_inertia(q, a);
     bias = model::planar_coriolis(q, qd, a) * qd + model::planar_gravity(q, a);

@@ -20,11 +20,11 @@ LegTrackingStep leg3d_tracking_step(Controller controller, const Leg5& q, const 
                                     const JointReference<5>& target, const Leg17& a_hat,
                                     double lambda, double kd, const Leg17& gamma) {
   if (controller == Controller::Pd)
-    return {pd_torque<5>(q, qd, target, lambda, kd), Leg17::Zero()};  // Eq. 5.14
+    return {pd_torque<5>(q, qd, target, lambda, kd), Leg17::Zero()};  // the law of Eq. 5.14
   const auto st = sliding_terms<5>(q, qd, target, lambda);
   const model::Leg3dRegressor y = model::leg3d_regressor(q, qd, st.qd_r, st.qdd_r);
-  return {adaptive_torque<5, 17>(y, a_hat, st, kd),  // Eq. 5.1
-          adaptation_rate<5, 17>(y, st, gamma)};     // Eq. 5.6
+  return {adaptive_torque<5, 17>(y, a_hat, st, kd),  // the law of Eq. 5.1
+          adaptation_rate<5, 17>(y, st, gamma)};     // and of Eq. 5.6
 }
 
 }  // namespace stride::swing_leg

@@ -1,6 +1,6 @@
 #pragma once
 // SwingLegTracking: Sec. 5.4.2 as a module. The left leg in torque mode follows the Ch. 3
-// pattern's joint angles under the adaptive law (Eqs. 5.1, 5.6) or the PD law it is compared
+// pattern's joint angles under the adaptive law (Eq. 5.1, Eq. 5.6) or the PD law it is compared
 // with (Eq. 5.14); every other joint holds the angle it had at the first frame.
 //   FrameInfo, JointSensorData, JointVelocities -> JointRequest
 // Choose it with `mr JointRequest SwingLegTracking` (scenes/swing_leg/hanging_nao.xml does);

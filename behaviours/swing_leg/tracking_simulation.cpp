@@ -95,7 +95,7 @@ TrackingResult run(const TrackingOptions& o, const ReferenceFunction& ref) {
     q_prev = q, qd_prev = qd, a_prev = a_hat;
     qd = v_pred + dv;
     q = q_pred + beta * qd;
-    if (o.controller == Controller::Adaptive)  // Eq. 5.6 with s at the end of the step
+    if (o.controller == Controller::Adaptive)  // the law of Eq. 5.6 with s at the end of the step
       a_hat = a_pred -
               beta * (gamma.asDiagonal() * (y.transpose() * (s_pred + (1 + o.lambda * beta) * dv)));
     if (!q.allFinite() || !qd.allFinite() || !a_hat.allFinite())

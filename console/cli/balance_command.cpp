@@ -280,7 +280,7 @@ Report run_command(const Options& o) {
   } else if (o.what == "closed-loop") {
     const ClosedLoopBoundaries c = closed_loop_boundaries(p, o.gains, o.x_set);
     rep.text << "PD closed loop kp " << num(o.gains.kp) << ", kd " << num(o.gains.kd)
-             << " (Eqs. 7.16-7.20): k1 " << num(c.k1) << ", k2 " << num(c.k2) << "\n";
+             << " (Eq. 7.16, Eq. 7.18, Eq. 7.20): k1 " << num(c.k1) << ", k2 " << num(c.k2) << "\n";
     rep.json.field("k1", c.k1).field("k2", c.k2).key("boundaries").begin_object();
     for (const auto& [n, l] : {std::pair{"l1", c.l1}, {"l2", c.l2}, {"a", c.a}, {"b", c.b}}) {
       rep.text << "  " << n << ": xdot = " << num(l.slope) << " x + " << num(l.intercept) << "\n";
@@ -390,7 +390,7 @@ Report run_command(const Options& o) {
     const Eigen::Vector4d x0(o.x0.value_or(0.0), p.theta0, o.v0.value_or(0.9475), p.theta_dot0);
     const auto samples = simulate_lqr(m, sol.K, x0, o.duration.value_or(3.0), o.dt);
     Eigen::IOFormat fmt(8, 0, ", ", "\n", "    [", "]");
-    rep.text << "LQR (Eqs. 7.38-7.39), x0 = [x, theta, xdot, thetadot] = ["
+    rep.text << "LQR (Eq. 7.38, Eq. 7.39), x0 = [x, theta, xdot, thetadot] = ["
              << x0.transpose().format(Eigen::IOFormat(8, 0, ", ")) << "]\n"
              << "  K =\n"
              << sol.K.format(fmt) << "\n  S =\n"

@@ -170,7 +170,7 @@ void write_plots(const std::vector<Frame>& walk, const walking::PatternParameter
   line_plot("fig3_8_waist_velocity", "time", {{"waist_vx", "waist forward velocity"}},
             "Fig. 3.8: forward waist velocity", "t [s]", "[m/s]");
   line_plot("fig3_10_lateral_first_step", "time", {{"waist_y", "waist y"}},
-            "Fig. 3.10: lateral waist trajectory, first step (Eqs. 3.7-3.8)", "t [s]", "[m]",
+            "Fig. 3.10: lateral waist trajectory, first step (Eq. 3.7, Eq. 3.8)", "t [s]", "[m]",
             "[0:" + std::to_string(p.T_step()) + "]");
   line_plot("fig3_15_forward", "time",
             {{"waist_x", "waist"}, {"left_x", "left foot"}, {"right_x", "right foot"}},

@@ -104,7 +104,7 @@ int run_kalman_experiment(const ExperimentOptions& o, std::ostream& out) {
                "lag pitch [ms]", "lag roll [ms]"},
               rows);
 
-  // The rates the D terms of Eqs. 4.8-4.9 act on, with the gyro offset started either way.
+  // The rates the D terms of Eq. 4.8 and Eq. 4.9 act on, with the gyro offset started either way.
   std::vector<Eigen::Vector2d> online_rate;
   for (const console::WalkFrame& f : rec.frames)
     online_rate.push_back({f.est_pitch_rate, f.est_roll_rate});

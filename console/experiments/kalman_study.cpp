@@ -21,7 +21,8 @@ KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start
       behaviours::initial_gyro_offset(gyro(r.frames.front()), start_at_first_sample);
   for (const console::WalkFrame& f : r.frames) {
     const Eigen::Vector2d measured = gyro(f);
-    offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);  // Eqs. 4.1-4.2
+    // The running offset of Eq. 4.1 and Eq. 4.2.
+    offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);
     const Eigen::Vector2d rate = behaviours::calibrated_gyro_rate(measured, offset);  // 4.3-4.4
     s.y.push_back({f.imu_pitch, f.imu_roll, rate.y(), rate.x()});
     s.truth.push_back({f.true_pitch, f.true_roll});

@@ -18,7 +18,7 @@ struct KalmanSeries {
   double period = 0.01;
 };
 
-// From a trace: IMU angles, gyro rates with the running offset of Eqs. 4.1-4.4 (alpha) removed;
+// From a trace: IMU angles, gyro rates with the running offset (Eq. 4.1, Eq. 4.2; alpha) removed;
 // the offset starts at the first sample or at 0, as GyroCalibration's start_at_first_sample.
 KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha = 0.001,
                            bool start_at_first_sample = true);

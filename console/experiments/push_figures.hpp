@@ -4,7 +4,8 @@
 //   position-push  phase_<control>.png: seed 1's estimated CoM state (x, xdot) from just before
 //                  the push, one curve per impulse (recovered or not), against the Ch. 7
 //                  boundaries: each strategy's capture interval [lo, hi] as the two lines
-//                  xdot = omega (lo - x) and xdot = omega (hi - x) (Eqs. 7.13, 7.30, 7.37).
+//                  xdot = omega (lo - x) and xdot = omega (hi - x) (Eq. 7.13,
+//                  Eq. 7.30 and Eq. 7.37).
 //   push-recovery  push_map_<direction>.png: walks lost of the seeds by push and gait phase,
 //                  posture control alone beside push recovery.
 #include <string>

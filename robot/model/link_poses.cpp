@@ -43,12 +43,12 @@ Eigen::Vector3d centre_of_mass(const RobotModel& model,
                                const std::vector<Eigen::Isometry3d>& poses) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double m = 0;
-  for (size_t i = 0; i < model.links.size(); ++i) {  // Eq. 3.17
+  for (size_t i = 0; i < model.links.size(); ++i) {
     const Inertial& in = model.links[i].inertial;
     sum += in.mass * (poses[i] * in.com);
     m += in.mass;
   }
-  return m > 0 ? Eigen::Vector3d(sum / m) : Eigen::Vector3d::Zero();
+  return m > 0 ? Eigen::Vector3d(sum / m) : Eigen::Vector3d::Zero();  // Eq. 3.17
 }
 
 }  // namespace stride::model

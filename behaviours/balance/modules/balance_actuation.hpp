@@ -15,8 +15,8 @@ using JointAngles = std::array<double, hal::kNumJoints>;
 // Every joint in position mode at `posture`.
 void hold_posture(JointRequest& r, const JointAngles& posture, double stiffness);
 
-// Eq. 7.10 on both ankle pitch joints; a positive joint torque presses the toes down, so it moves
-// the CoP forward. `mass` is what the ankles carry.
+// The torque of Eq. 7.10 on both ankle pitch joints; a positive joint torque presses the toes down,
+// so it moves the CoP forward. `mass` is what the ankles carry.
 void command_ankle_zmp(JointRequest& r, double zmp_x, double mass, double g);
 
 // Both hip pitch joints at the posture's angle minus theta.

@@ -79,7 +79,7 @@ class CombinedBalance final : public StandingBalance {
       const balance::ComState s = absolute_state();
       const double xi = balance::capture_point(s, p.omega());
       if (xi > p.zmp_min && xi < p.zmp_max) return;
-      // Eq. 7.36: the ankle holds the border, the hip covers the rest of the capture point.
+      // The ankle holds the border, the hip covers the rest of the capture point (Eq. 7.36).
       excursion_ = HatExcursion{p, s, balance::plan_combined(p, s), frame_.time};
     }
     const auto theta = excursion_->theta(frame_.time, params_.hold_time, params_.return_time);

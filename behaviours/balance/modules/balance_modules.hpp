@@ -1,10 +1,10 @@
 #pragma once
 // Standing balance strategies of thesis Ch. 7 as modules that provide the JointRequest (the
 // standing posture plus corrections); choose one with `mr JointRequest <module>`:
-//   AnkleBalance     PD on the CoM through the ankle ZMP (Eqs. 7.16-7.20)
+//   AnkleBalance     PD on the CoM through the ankle ZMP (Eq. 7.16, Eq. 7.18)
 //   HipBalance       bang-bang HAT torque profile (Algorithm 2), ankles hold the posture
-//   CombinedBalance  ankle ZMP at the sole border + bang-bang hip (Eqs. 7.31-7.37)
-//   LqrBalance       LQR on [x, theta, xdot, thetadot] -> [x_zmp, tau_h] (Eqs. 7.38-7.39)
+//   CombinedBalance  ankle ZMP at the sole border + bang-bang hip (Eq. 7.36)
+//   LqrBalance       LQR on [x, theta, xdot, thetadot] -> [x_zmp, tau_h] (Eq. 7.39)
 // All require ComState, BalanceModel (ComStateEstimator), JointSensorData and FrameInfo.
 // BalanceOutlook (balance_outlook.hpp) predicts which of them would recover the robot.
 #include <Eigen/Core>

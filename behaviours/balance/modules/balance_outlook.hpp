@@ -15,17 +15,17 @@ namespace stride {
 struct BalancePrediction {
   bool valid = false;              // false until ComState and BalanceModel are
   double capture_point = 0;        // x0 + xdot0 / omega in the ground frame, m
-  bool ankle_recovers = false;     // Eq. 7.13: the ankle alone
-  bool hip_recovers = false;       // Eq. 7.30: the hip's bang-bang profile alone
-  bool combined_recovers = false;  // Eq. 7.37: both together
+  bool ankle_recovers = false;     // the ankle alone (Eq. 7.13)
+  bool hip_recovers = false;       // the hip's bang-bang profile alone (Eq. 7.30)
+  bool combined_recovers = false;  // both together (Eq. 7.37)
   // The least effort that recovers: 0 ankle, 1 hip, 2 combined, 3 none (balance::Strategy).
   std::int32_t strategy = 3;
   // The boundaries as capture-point intervals [lo, hi] (in the (x, xdot) plane the lines
   // xdot = omega (lo - x) and omega (hi - x)), for phase portraits against them.
   double omega = 0;                         // 1/s
-  double ankle_lo = 0, ankle_hi = 0;        // m, Eq. 7.13
-  double hip_lo = 0, hip_hi = 0;            // m, Eq. 7.30
-  double combined_lo = 0, combined_hi = 0;  // m, Eq. 7.37
+  double ankle_lo = 0, ankle_hi = 0;        // m, bounds of Eq. 7.13
+  double hip_lo = 0, hip_hi = 0;            // m, bounds of Eq. 7.30
+  double combined_lo = 0, combined_hi = 0;  // m, bounds of Eq. 7.37
 
   static constexpr std::string_view kTypeName = "BalancePrediction";
   static constexpr auto fields() {

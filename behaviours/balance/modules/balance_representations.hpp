@@ -24,7 +24,7 @@ struct EnumNames<GroundOrigin> {
 // sole (x forward, z up); the thesis' x_cm and the ZMP are measured from the ankle like this.
 struct ComState {
   bool valid = false;  // false until the filter has seen joints and a centre of pressure
-  double x = 0, xdot = 0, y = 0, ydot = 0;  // filtered CoM state (Eqs. 7.1-7.4)
+  double x = 0, xdot = 0, y = 0, ydot = 0;  // filtered CoM state (Sec. 7.2)
   double zmp_x = 0, zmp_y = 0;              // filtered ZMP
   double com_height = 0;                    // kinematic CoM height z0 above the soles
   Eigen::Vector3d measured_com = Eigen::Vector3d::Zero();  // kinematic CoM, this frame

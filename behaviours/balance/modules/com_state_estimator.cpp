@@ -188,7 +188,7 @@ class ComStateEstimator final : public Module {
     }
     const auto filter =
         balance::com_filter_model(com.z(), params_.g, frame_.period, params_.sigma_position,
-                                  params_.sigma_velocity, params_.sigma_zmp);  // Eqs. 7.3-7.4
+                                  params_.sigma_velocity, params_.sigma_zmp);  // A, B of Sec. 7.2
     const auto predicted = balance::predict(filter, estimate_, Eigen::Vector2d::Zero());
     if (params_.sigma_force > 0) {
       // The printed C: the accelerometer's levelled horizontal specific force times m is the
@@ -234,7 +234,7 @@ class ComStateEstimator final : public Module {
   const ComStateEstimatorParameters& params_;
   ComState& state_;
   BalanceModel& model_out_;
-  DebugRequest debug_;  // measured CoM and CoP beside the filter's CoM and ZMP (Eqs. 7.1-7.4)
+  DebugRequest debug_;  // measured CoM and CoP beside the filter's CoM and ZMP (Sec. 7.2)
   KinematicCom com_;
   bool stand_measured_ = false;
   balance::ComEstimate estimate_;

@@ -1,6 +1,6 @@
 #pragma once
 // ComStateEstimator (thesis Sec. 7.2): kinematic CoM + FSR centre of pressure, fused by the
-// 3D-LIPM Kalman filter of Eqs. 7.1-7.4, in the ground frame between the feet.
+// 3D-LIPM Kalman filter (Sec. 7.2), in the ground frame between the feet.
 //   JointSensorData, FsrSensorData, InertialSensorData, FrameInfo -> ComState, BalanceModel
 #include <array>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// One bang-bang excursion of the head-arms-trunk about the hips (thesis Eqs. 7.24-7.27) as a
+// One bang-bang excursion of the head-arms-trunk about the hips (thesis Eq. 7.24, Eq. 7.27) as a
 // position trajectory: the HAT angle the hip pitch servos are sent to, then a hold at the peak
 // and a smooth return to the posture.
 #include <algorithm>

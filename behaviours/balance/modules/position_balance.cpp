@@ -87,9 +87,9 @@ class PositionBalance final : public StandingBalance {
     if (excursion_) state_.strategy = chosen;
   }
 
-  // Eqs. 7.16-7.19 demand a ZMP; Eq. 7.10 turns its distance from the FSR CoP into an ankle
-  // torque error, which the admittance turns into the ankle pitch offset (toes down > 0 moves the
-  // CoP forward).
+  // The PD law (Eq. 7.16) demands a ZMP (Eq. 7.18, clipped by Eq. 7.19); Eq. 7.10 turns its
+  // distance from the FSR CoP into an ankle torque error, which the admittance turns into the ankle
+  // pitch offset (toes down > 0 moves the CoP forward).
   double ankle_offset(const balance::BalanceParams& p) {
     const double demanded =
         balance::pd_demanded_zmp(p, {params_.kp, params_.kd}, absolute_state(), *x_set_);

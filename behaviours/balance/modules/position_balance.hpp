@@ -3,10 +3,10 @@
 // no torques, its Sec. 8.2 future work):
 //   PositionBalance  ComState, BalanceModel, JointSensorData, FrameInfo -> JointRequest
 // Ankle strategy: the CoP is regulated through the ankle pitch positions: the Ch. 7 PD on the CoM
-// (Eqs. 7.16-7.19) demands a ZMP, the FSR CoP is measured, and their difference as an ankle
-// torque (Eq. 7.10) drives an ankle admittance whose offset is added to the posture.
-// Hip strategy: the bang-bang HAT excursion (Eqs. 7.24-7.27) sent to the hip pitch positions.
-// Combined: both, the ankle aiming at the sole border (Eqs. 7.31-7.37).
+// (Eq. 7.16, Eq. 7.18, Eq. 7.19) demands a ZMP, the FSR CoP is measured, and their difference as an
+// ankle torque (Eq. 7.10) drives an ankle admittance whose offset is added to the posture. Hip
+// strategy: the bang-bang HAT excursion (Eq. 7.24, Eq. 7.27) sent to the hip pitch positions.
+// Combined: both, the ankle aiming at the sole border (Eq. 7.36).
 // With `strategy` auto, each disturbance is classified by the Ch. 7 boundaries (least effort
 // first: ankle, hip, combined) and met with the strategy chosen.
 #include <array>
@@ -35,7 +35,7 @@ struct PositionBalanceState {
   balance::Strategy predicted = balance::Strategy::ankle;
   balance::Strategy strategy = balance::Strategy::ankle;
   double capture_point = 0;  // m, x + xdot / omega when the strategy was chosen
-  double demanded_zmp = 0;   // m, Eqs. 7.18-7.19
+  double demanded_zmp = 0;   // m, of Eq. 7.18 clipped by Eq. 7.19
   double ankle_offset = 0;   // rad, added to both AnklePitch joints
   double hat_angle = 0;      // rad, trunk forward of the posture (both HipPitch at posture - it)
 
@@ -91,7 +91,7 @@ struct PositionBalanceParameters {
   }
 };
 
-// Eq. 7.10: the ankle torque (N m) that would move the CoP from `cop` to `zmp` (m) under `mass`.
+// The ankle torque (N m, Eq. 7.10) that would move the CoP from `cop` to `zmp` (m) under `mass`.
 inline double cop_torque_error(double mass, double g, double zmp, double cop) {
   return mass * g * (zmp - cop);
 }

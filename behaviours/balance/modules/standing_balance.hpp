@@ -41,7 +41,7 @@ class StandingBalance : public Module {
   balance::ComState relative_state() const { return {com_.x - *x_set_, com_.xdot}; }
   balance::ComState absolute_state() const { return {com_.x, com_.xdot}; }
 
-  // Eqs. 7.18-7.19: the PD ZMP, clipped to the sole, applied through the ankles.
+  // The PD ZMP (Eq. 7.18), clipped to the sole (Eq. 7.19), applied through the ankles.
   void ankle_pd(double kp, double kd) {
     const balance::BalanceParams p = balance_params(model_, 0, 0);
     const double zmp = balance::pd_demanded_zmp(p, {kp, kd}, absolute_state(), *x_set_);

@@ -15,7 +15,7 @@ inline constexpr int kWalkPlanSteps = 4;
 
 struct WalkPlan {
   double t = 0.0;                                   // pattern time sampled (clamped to the walk)
-  std::array<double, 2> zmp{};                      // Eq. 3.16 reference
+  std::array<double, 2> zmp{};                      // the ZMP reference of Eq. 3.16
   std::int64_t support = 0;                         // 0 both feet, 1 left foot, 2 right foot
   std::array<double, 3> left_foot{}, right_foot{};  // planned now (x, y, yaw)
   std::int64_t steps = 0;  // footsteps ahead listed below (at most kWalkPlanSteps)

@@ -10,11 +10,11 @@ Eigen::Vector2d cycloid(double distance, double H_foot, double progress) {
   const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
   const double alpha = distance / (2.0 * std::numbers::pi);
   // delta * alpha = H_foot / 2, so the height needs no division by a possibly zero alpha.
-  return {alpha * (psi - std::sin(psi)), 0.5 * H_foot * (1.0 - std::cos(psi))};
+  return {alpha * (psi - std::sin(psi)), 0.5 * H_foot * (1.0 - std::cos(psi))};  // Eq. 3.11
 }
 
 double synchronisation_alpha(const SpeedLevel& level, double T_s, double T_d) {
-  return (level.V_max * T_d + level.V_min * T_s) / std::numbers::pi;
+  return (level.V_max * T_d + level.V_min * T_s) / std::numbers::pi;  // Eq. 3.15
 }
 
 Footsteps::Footsteps(const PatternParameters& p, const ForwardMotion& forward)
@@ -49,7 +49,7 @@ Eigen::Vector3d Footsteps::foot(Foot f, double t) const {
   if (t >= swing_end(j)) return {foothold(j + 1), y, 0.0};
   const double from = foothold(j - 1), to = foothold(j + 1);
   const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
-  const Eigen::Vector2d c = cycloid(to - from, H_foot_, progress);  // Eq. 3.11
+  const Eigen::Vector2d c = cycloid(to - from, H_foot_, progress);  // the cycloid of Eq. 3.11
   return {from + c.x(), y, c.y()};
 }
 

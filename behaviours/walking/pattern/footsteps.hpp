@@ -1,5 +1,5 @@
 #pragma once
-// Footholds and cycloid swing-foot trajectories (Eqs. 3.11-3.15). Every step boundary
+// Footholds and cycloid swing-foot trajectories (Eq. 3.11, Eq. 3.12, Eq. 3.15). Every step boundary
 // t = j T_step is the middle of a single support; there the support foot stands at the waist's
 // forward position X_j (Eq. 3.12), and in the rhythmic phase the swing foot passes it too.
 // Swing j is centred at j T_step (left foot for even j, right for odd j) and carries the foot from
@@ -15,11 +15,11 @@ namespace stride::walking {
 enum class Foot { kLeft, kRight };
 enum class SupportPhase { kDouble, kLeft, kRight };
 
-// Eq. 3.11 with delta = H_foot / (2 alpha): (forward, up) after `progress` in [0, 1] of a swing
-// that covers `distance`. alpha = distance / (2 pi) (Eq. 3.15 in the rhythmic phase).
+// The cycloid of Eq. 3.11 with delta = H_foot / (2 alpha): (forward, up) after `progress` in [0, 1]
+// of a swing that covers `distance`. alpha = distance / (2 pi) (Eq. 3.15 in the rhythmic phase).
 Eigen::Vector2d cycloid(double distance, double H_foot, double progress);
 
-// Eq. 3.15: alpha = (V_max T_d + V_min T_s) / pi, one rhythmic step length over pi.
+// alpha = (V_max T_d + V_min T_s) / pi (Eq. 3.15), one rhythmic step length over pi.
 double synchronisation_alpha(const SpeedLevel& level, double T_s, double T_d);
 
 class Footsteps {

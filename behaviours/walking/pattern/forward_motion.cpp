@@ -15,8 +15,11 @@ constexpr double kPi = std::numbers::pi;
 Motion1d rhythmic_step(const SpeedLevel& level, double T_s, double T_d, double u) {
   const double dv = level.V_max - level.V_min, sv = level.V_min + level.V_max;
   const double A_m = kPi * dv / (2.0 * T_s);  // maximum acceleration (Eq. 3.2)
-  if (u < T_s) {                              // speed-up (Eqs. 3.1, 3.2, 3.4 first line)
+  if (u < T_s) {                              // speed-up, the first lines of:
     const double w = kPi * u / T_s;
+    // Eq. 3.4 (position)
+    // Eq. 3.1 (speed)
+    // Eq. 3.2 (acceleration)
     return {0.5 * sv * u - dv * T_s / (2.0 * kPi) * std::sin(w),
             0.5 * dv * (1.0 - std::cos(w)) + level.V_min, A_m * std::sin(w)};
   }
@@ -30,8 +33,8 @@ Motion1d VelocityQuartic::at(double u) const {
   Motion1d m;
   double pw = 1.0;  // u^i
   for (int i = 0; i < 5; ++i) {
-    m.p += c[i] * pw * u / (i + 1);  // Eq. 3.5 integrated
-    m.v += c[i] * pw;
+    m.p += c[i] * pw * u / (i + 1);  // V of Eq. 3.5, integrated
+    m.v += c[i] * pw;                // Eq. 3.5
     if (i < 4) m.a += (i + 1) * c[i + 1] * pw;
     pw *= u;
   }
@@ -49,6 +52,7 @@ VelocityQuartic development_quartic(double v_start, double v_end, double jerk_en
   A << T * T, T * T * T, T * T * T * T,  //
       2 * T, 3 * T * T, 4 * T * T * T,   //
       2, 6 * T, 12 * T * T;
+  // Eq. 3.6
   const Eigen::Vector3d x = A.partialPivLu().solve(Eigen::Vector3d(v_end - v_start, 0, jerk_end));
   return {{v_start, 0.0, x(0), x(1), x(2)}};
 }

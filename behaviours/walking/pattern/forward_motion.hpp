@@ -1,6 +1,6 @@
 #pragma once
-// Forward (x) waist motion: rhythmic steps by cosine speed profiles (Eqs. 3.1-3.4), development
-// and decay steps by 4th-order velocity polynomials (Eqs. 3.5-3.6).
+// Forward (x) waist motion: rhythmic steps by cosine speed profiles (Eq. 3.1, Eq. 3.2 and
+// Eq. 3.4), development and decay steps by 4th-order velocity polynomials (Eq. 3.5, Eq. 3.6).
 #include <array>
 #include <vector>
 
@@ -9,7 +9,8 @@
 
 namespace stride::walking {
 
-// Eq. 3.1, 3.2, 3.4: one rhythmic step, u in [0, T_step] from the middle of a single support.
+// One rhythmic step (Eq. 3.1, Eq. 3.2, Eq. 3.4), u in [0, T_step] from the middle of a single
+// support.
 Motion1d rhythmic_step(const SpeedLevel& level, double T_s, double T_d, double u);
 
 // Velocity polynomial V(u) = sum c[i] u^i of one development or decay step (Eq. 3.5).
@@ -19,10 +20,10 @@ struct VelocityQuartic {
   double jerk(double u) const;  // second derivative of the velocity
 };
 
-// Eq. 3.6: from v_start to v_end over T_step with zero acceleration at both ends and the
-// second velocity derivative at the end equal to that of the next rhythmic-shaped step.
+// The quartic of Eq. 3.6: from v_start to v_end over T_step with zero acceleration at both ends and
+// the second velocity derivative at the end equal to that of the next rhythmic-shaped step.
 VelocityQuartic development_quartic(double v_start, double v_end, double jerk_end, double T_step);
-// Eq. 3.6 mirrored in time for the decay phase: the jerk is prescribed at the start.
+// The quartic of Eq. 3.6 mirrored in time for the decay phase: the jerk is prescribed at the start.
 VelocityQuartic decay_quartic(double v_start, double v_end, double jerk_start, double T_step);
 
 // Second derivative of the speed where a rhythmic step at `level` starts or ends (Eq. 3.6

@@ -1,5 +1,5 @@
 #pragma once
-// Lateral (y) waist motion in the transverse plane: a cubic first step (Eqs. 3.7-3.8), the
+// Lateral (y) waist motion in the transverse plane: a cubic first step (Eq. 3.7, Eq. 3.8), the
 // cosine sway (Eq. 3.9), and the first step mirrored in time as the last step, which ends with
 // the waist back between both feet. y is positive to the left.
 #include <array>

@@ -115,7 +115,7 @@ std::optional<std::string> validation_error(const PatternParameters& p) {
       return e;
   for (std::size_t i = 0; i < p.decay.size(); ++i)
     if (auto e = level_error(p.decay[i], "decay level " + std::to_string(i + 1))) return e;
-  // Eq. 3.15: the cycloid's alpha is the step length over pi; zero makes delta undefined.
+  // The cycloid's alpha (Eq. 3.15) is the step length over pi; zero makes delta undefined.
   if (p.rhythmic.V_max * p.T_d() + p.rhythmic.V_min * p.T_s() <= 0.0)
     return "V_min and V_max are both 0: alpha (Eq. 3.15) is 0 and delta = H_foot/(2 alpha) is "
            "undefined";

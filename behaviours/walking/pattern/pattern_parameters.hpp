@@ -23,7 +23,7 @@ struct PatternParameters {
   SpeedLevel rhythmic{0.18, 0.19};
   // Intermediate speed levels from rest up to `rhythmic` (Fig. 3.7 left: V_min2/V_max2,
   // V_min1/V_max1, ...) and from `rhythmic` down to rest. Each list of n levels means n + 1
-  // polynomial steps (Eqs. 3.5-3.6).
+  // polynomial steps (Eq. 3.5, Eq. 3.6).
   std::vector<SpeedLevel> development;
   std::vector<SpeedLevel> decay;
   int steps = 60;         // waist steps of T_step; the feet make steps + 1 swings (Sec. 4.3.4.2)

@@ -11,7 +11,8 @@ Motion1d sagittal_step(double z_min, double z_max, double T_s, double T_d, doubl
   const double k = std::numbers::pi / T_s;
   if (u >= T_s && u < T_d) return {z_min, 0.0, 0.0};
   const double w = k * (u < T_s ? u - T_s : u - T_d);
-  return {A_s * (1.0 - std::cos(w)) + z_min, A_s * k * std::sin(w), A_s * k * k * std::cos(w)};
+  return {A_s * (1.0 - std::cos(w)) + z_min, A_s * k * std::sin(w),
+          A_s * k * k * std::cos(w)};  // Eq. 3.10
 }
 
 Motion1d waist_height(const PatternParameters& p, double t) {

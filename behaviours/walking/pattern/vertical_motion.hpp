@@ -6,7 +6,7 @@
 
 namespace stride::walking {
 
-// Eq. 3.10 within one step, u in [0, T_step] from the middle of a single support.
+// The height of Eq. 3.10 within one step, u in [0, T_step] from the middle of a single support.
 Motion1d sagittal_step(double z_min, double z_max, double T_s, double T_d, double u);
 
 // The walk's waist height: Eq. 3.10 every step, resting at z_max before and after.

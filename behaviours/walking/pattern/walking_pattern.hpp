@@ -21,7 +21,7 @@ struct PatternSample {
   Eigen::Vector3d left_foot = Eigen::Vector3d::Zero();  // sole-frame origins
   Eigen::Vector3d right_foot = Eigen::Vector3d::Zero();
   SupportPhase support = SupportPhase::kDouble;
-  Eigen::Vector2d zmp = Eigen::Vector2d::Zero();  // Eq. 3.16
+  Eigen::Vector2d zmp = Eigen::Vector2d::Zero();  // the ZMP of Eq. 3.16
 };
 
 // What both patterns share: forward and lateral waist motion, footsteps, ZMP.
@@ -41,7 +41,7 @@ class HorizontalPattern {
   Footsteps feet_;
 };
 
-// Stretched-knee pattern: 3-D waist motion (Eqs. 3.1-3.10), cycloid feet (3.11-3.15).
+// Stretched-knee pattern: 3-D waist motion (Sec. 3.3), cycloid feet (Sec. 3.4, Sec. 3.5).
 class StretchedKneePattern : public HorizontalPattern {
  public:
   explicit StretchedKneePattern(const PatternParameters& p) : HorizontalPattern(p) {}

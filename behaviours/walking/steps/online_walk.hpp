@@ -3,9 +3,9 @@
 // each waist step's speed, sideways speed and turn rate are chosen when the swing that ends it
 // lifts off (the step's footholds are then fixed), from the request at that moment within the
 // StepLimits; a step whose leg IK would leave the joint limits or the legs' reach is planned again
-// with half its change. The walk starts from standing with a first step (Eqs. 3.6-3.8) and, once
-// asked to stand and slow enough, ends with a last step that brings the waist to rest between the
-// feet.
+// with half its change. The walk starts from standing with a first step (Eq. 3.6, Eq. 3.7, Eq. 3.8)
+// and, once asked to stand and slow enough, ends with a last step that brings the waist to rest
+// between the feet.
 //
 // Footholds: at boundary j the support foot (left at odd j) stands d_0 beside the walk frame
 // F_j, turned with it (Eq. 3.12 on a path); swing j carries the other foot from foothold j-1 to
@@ -38,7 +38,7 @@ struct WalkSample {
   double torso_yaw = 0.0;
   FootPose left, right;
   SupportPhase support = SupportPhase::kDouble;
-  Eigen::Vector2d zmp = Eigen::Vector2d::Zero();  // Eq. 3.16
+  Eigen::Vector2d zmp = Eigen::Vector2d::Zero();  // the ZMP of Eq. 3.16
   int step = -1;                                  // waist step under way (-1 standing)
 };
 

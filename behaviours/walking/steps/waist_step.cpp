@@ -47,7 +47,7 @@ WaistStep::WaistStep(const PatternParameters& p, int index, StepKind kind, const
   const SpeedLevel a = level_for_mean_speed(p, v0.forward),
                    b = level_for_mean_speed(p, to_.forward);
   if (kind == StepKind::kMiddle && v0.forward == to_.forward) {
-    rhythmic_ = true;  // Eqs. 3.1-3.4
+    rhythmic_ = true;  // the rhythmic step of Sec. 3.3.1
     level_ = a;
   } else if (std::abs(to_.forward) >= std::abs(v0.forward)) {
     // Eq. 3.6: ends with the speed's second derivative of the rhythmic step that follows.
@@ -66,7 +66,7 @@ Motion1d WaistStep::forward(double u) const {
 }
 
 Motion1d WaistStep::sway(double u) const {
-  if (kind_ == StepKind::kFirst) return first_.at(u);  // Eqs. 3.7, 3.8
+  if (kind_ == StepKind::kFirst) return first_.at(u);  // Eq. 3.7, the cubic solved from Eq. 3.8
   if (kind_ == StepKind::kLast) {
     // The first step played backwards, on the side where the sway arrives: the walk ends with
     // the waist back between the feet.
@@ -86,7 +86,7 @@ LocalMotion WaistStep::local(double u) const {
 Pose2 WaistStep::frame_at(double u) const {
   u = std::clamp(u, 0.0, T_);
   // Simpson's rule over panels of at most 5 ms: the integrand is smooth within each piece of
-  // Eq. 3.4, so the error stays below a micrometre over a step.
+  // the position of Eq. 3.4, so the error stays below a micrometre over a step.
   const int n = 2 * std::max(1, static_cast<int>(std::ceil(u / 0.01)));
   const double h = u / n;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();

@@ -1,10 +1,11 @@
 #pragma once
 // One waist step of an online walk: [k T_step, (k+1) T_step) from the middle of one single support
 // to the middle of the next, planned in the walk frame where it starts. Forward speed follows the
-// thesis' profiles (Eqs. 3.1-3.6: a rhythmic step when the speed is kept, a quartic when it
+// thesis' profiles (Sec. 3.3.1: a rhythmic step when the speed is kept, a quartic when it
 // changes), sideways speed and turn rate change by quartics with zero slope at both ends, the
-// lateral sway is Eqs. 3.7-3.9 and the height Eq. 3.10. Every quantity is continuous in position,
-// velocity and acceleration across step boundaries when consecutive steps share their velocity.
+// lateral sway is Eq. 3.7, Eq. 3.8, Eq. 3.9 and the height Eq. 3.10. Every quantity is continuous
+// in position, velocity and acceleration across step boundaries when consecutive steps share their
+// velocity.
 #include "behaviours/walking/pattern/forward_motion.hpp"
 #include "behaviours/walking/pattern/lateral_motion.hpp"
 #include "behaviours/walking/pattern/motion_sample.hpp"

@@ -160,12 +160,12 @@ FullBodyTerms full_body_terms(const FullBodyParams& p, const FullBodyVector& q,
         if (k == 0) t.inertia(r, c) = h[r][c].v;
       }
   }
-  // Eq. C.14 (the script's loop): C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i.
+  // The script's loop: C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i.
   t.coriolis.setZero();
   for (int k = 0; k < kFullBodyDof; ++k)
     for (int j = 0; j < kFullBodyDof; ++j)
       for (int i = 0; i < kFullBodyDof; ++i)
-        t.coriolis(k, j) += 0.5 * (dh[i][k][j] + dh[j][k][i] - dh[k][i][j]) * qd[i];
+        t.coriolis(k, j) += 0.5 * (dh[i][k][j] + dh[j][k][i] - dh[k][i][j]) * qd[i];  // Eq. C.14
   // G = dP/dq and J = d(swing sole)/dq, one dual pass per coordinate.
   const auto link = links(p);
   for (int c = 0; c < kFullBodyDof; ++c) {

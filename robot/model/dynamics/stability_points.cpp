@@ -6,7 +6,7 @@ namespace stride::model {
 namespace {
 
 // Moment balance about a ground point for "forces" f_i at p_i and extra moments: the point where
-// the tangential moment vanishes (shared by Eq. 2.3, the FRI and, with one segment, Eq. 2.5).
+// the tangential moment vanishes (shared by the ZMP of Eq. 2.3 and the FRI).
 struct MomentSums {
   double fz = 0, x_fz = 0, y_fz = 0, h_fx = 0, h_fy = 0;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();
@@ -35,19 +35,20 @@ Eigen::Vector3d supported_force(const SegmentMotion& s, double gravity) {
 
 Eigen::Vector2d zmp_multibody(std::span<const SegmentMotion> segments, double ground_z,
                               double gravity) {
-  MomentSums sums;  // Eq. 2.3
+  MomentSums sums;
   for (const SegmentMotion& s : segments) {
     sums.add(s.com, supported_force(s, gravity), ground_z);
     sums.moment -= s.angular_momentum_rate;  // Eq. 2.2: inertial moments balance gravity
   }
-  return sums.point();
+  return sums.point();  // Eq. 2.3
 }
 
 Eigen::Vector2d zmp_point_mass(const Eigen::Vector3d& com, const Eigen::Vector3d& com_acceleration,
                                double mass, const Eigen::Vector3d& angular_momentum_rate,
                                double ground_z, double gravity) {
-  const double fz = mass * (com_acceleration.z() + gravity);  // Eq. 2.5
+  const double fz = mass * (com_acceleration.z() + gravity);
   const double h = com.z() - ground_z;
+  // Eq. 2.5
   return {(mass * (com.x() * (com_acceleration.z() + gravity) - h * com_acceleration.x()) -
            angular_momentum_rate.y()) /
               fz,
@@ -89,7 +90,7 @@ Eigen::Vector2d foot_rotation_indicator(const SegmentMotion& stance_foot,
   sums.add(stance_foot.com, Eigen::Vector3d(0, 0, stance_foot.mass * gravity), ground_z);
   for (const SegmentMotion& s : rest_of_body) {
     sums.add(s.com, supported_force(s, gravity), ground_z);
-    sums.moment -= s.angular_momentum_rate;  // Eq. 2.2: inertial moments balance gravity
+    sums.moment -= s.angular_momentum_rate;  // inertial moments balance gravity, as in Eq. 2.2
   }
   return sums.point();
 }

@@ -21,11 +21,11 @@ struct SegmentMotion {
   Eigen::Vector3d angular_momentum_rate = Eigen::Vector3d::Zero();
 };
 
-// Eq. 2.3: ZMP of an articulated body on the plane z = ground_z.
+// ZMP of an articulated body on the plane z = ground_z (Eq. 2.3).
 Eigen::Vector2d zmp_multibody(std::span<const SegmentMotion> segments, double ground_z = 0,
                               double gravity = kGravity);
 
-// Eq. 2.5: ZMP of a point mass with the total angular momentum rate about the CoG.
+// ZMP of a point mass with the total angular momentum rate about the CoG (Eq. 2.5).
 Eigen::Vector2d zmp_point_mass(
     const Eigen::Vector3d& com, const Eigen::Vector3d& com_acceleration, double mass,
     const Eigen::Vector3d& angular_momentum_rate = Eigen::Vector3d::Zero(), double ground_z = 0,

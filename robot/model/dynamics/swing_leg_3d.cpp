@@ -11,8 +11,8 @@
 namespace stride::model {
 namespace {
 
-// The three CoM lines of Eqs. C.16-C.20 are sums of lengths times unit directions u1 (thigh),
-// u2 (tibia), u3 (foot); U[k] = du_k/dq (3 x 5). With them the kinetic energy is
+// The three CoM positions (Eq. C.16, Eq. C.18, Eq. C.20) are sums of lengths times unit directions
+// u1 (thigh), u2 (tibia), u3 (foot); U[k] = du_k/dq (3 x 5). With them the kinetic energy is
 //   K = 1/2 q'^T [ (J1+J3+J5) U1'U1 + (J2+J6) U2'U2 + J4 U3'U3 + J9 (U1'U2 + U2'U1)
 //                + J7 (U1'U3 + U3'U1) + J8 (U2'U3 + U3'U2) + rotational terms ] q'
 // and P = J15 u1z + J16 u2z + J17 u3z: every term is one parameter times a matrix of q.
@@ -70,7 +70,7 @@ void basis(const std::array<T, 5>& q, Basis<T>& b) {
   add_product(6, u1, u3, true);                           // J7
   add_product(7, u2, u3, true);                           // J8
   add_product(8, u1, u2, true);                           // J9
-  // Rotational terms of Eq. C.22: angular rates are sums of joint rates.
+  // Eq. C.22, rotational terms: angular rates are sums of joint rates.
   const auto add_rate = [&](int k, std::initializer_list<int> joints) {
     for (int i : joints)
       for (int j : joints) b[k][i][j] += T(1);
@@ -114,13 +114,13 @@ void basis_with_derivatives(const Vector5d& q, BasisWithDerivatives& out) {
   }
 }
 
-// Eq. C.14: C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i, with dh[i] = dH/dq_i.
+// C_kj = sum_i 1/2 (dH_kj/dq_i + dH_ki/dq_j - dH_ij/dq_k) q'_i (Eq. C.14), with dh[i] = dH/dq_i.
 Matrix5d christoffel(const std::array<Matrix5d, 5>& dh, const Vector5d& qd) {
   Matrix5d c = Matrix5d::Zero();
   for (int k = 0; k < 5; ++k)
     for (int j = 0; j < 5; ++j)
       for (int i = 0; i < 5; ++i)
-        c(k, j) += 0.5 * (dh[i](k, j) + dh[j](k, i) - dh[k](i, j)) * qd[i];
+        c(k, j) += 0.5 * (dh[i](k, j) + dh[j](k, i) - dh[k](i, j)) * qd[i];  // Eq. C.14
   return c;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Three-dimensional five-joint swing leg (thesis App. C, Fig. C.2): q = [hip roll a1, hip pitch
-// t1, knee t2, ankle pitch t3, ankle roll a2] (Eq. C.24's ordering), link CoMs of Eqs. C.16-C.20,
-// kinetic energy C.22, potential C.23. H, C (Eq. C.14 choice), g and the 5x17 regressor Y with
-// a = [J1 .. J17] are computed from the model's geometry, linear in a by construction.
+// t1, knee t2, ankle pitch t3, ankle roll a2] (Eq. C.24's ordering), link CoMs of Eq. C.16, Eq.
+// C.18, Eq. C.20, kinetic energy Eq. C.22, potential Eq. C.23. H, C (Eq. C.14 choice), g and the
+// 5x17 regressor Y with a = [J1 .. J17] are computed from the model's geometry, linear in a by
+// construction.
 #include <Eigen/Core>
 
 namespace stride::model {

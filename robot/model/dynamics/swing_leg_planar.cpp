@@ -49,7 +49,7 @@ Eigen::Matrix3d planar_coriolis(const Eigen::Vector3d& q, const Eigen::Vector3d&
   const double r = a[3] * s3 + a[5] * s23;  // J4 s3 + J6 s23
   const double k = a[3] * s3;               // J4 s3
   const double sum = qd[0] + qd[1] + qd[2];
-  Eigen::Matrix3d c;
+  Eigen::Matrix3d c;  // Eq. C.14, the thesis' C_ij written out
   c << -p * qd[1] - r * qd[2], -p * qd[0] - p * qd[1] - r * qd[2], -r * sum,  //
       p * qd[0] - k * qd[2], -k * qd[2], -k * sum,                            //
       r * qd[0] + k * qd[1], k * (qd[0] + qd[1]), 0;
@@ -67,7 +67,7 @@ PlanarRegressor planar_regressor(const Eigen::Vector3d& q, const Eigen::Vector3d
                c23 = std::cos(q[1] + q[2]), s23 = std::sin(q[1] + q[2]);
   const double s1 = std::sin(q[0]), s12 = std::sin(q[0] + q[1]), s123 = std::sin(q.sum());
   const double qsum = qd.sum();
-  PlanarRegressor y = PlanarRegressor::Zero();
+  PlanarRegressor y = PlanarRegressor::Zero();  // Eq. 5.4, Y_ij of Appendix C
   // Row 1
   y(0, 0) = qdd_r[0];
   y(0, 1) =
@@ -100,7 +100,7 @@ PlanarRegressor planar_regressor(const Eigen::Vector3d& q, const Eigen::Vector3d
 
 Eigen::Vector3d planar_forward_dynamics(const Eigen::Vector3d& q, const Eigen::Vector3d& qd,
                                         const Eigen::Vector3d& tau, const Vector9d& a) {
-  return planar_inertia(q, a).llt().solve(tau - planar_coriolis(q, qd, a) * qd -
+  return planar_inertia(q, a).llt().solve(tau - planar_coriolis(q, qd, a) * qd -  // Eq. C.15
                                           planar_gravity(q, a));
 }
 

@@ -26,10 +26,10 @@ Vector9d planar_parameters(const PlanarLegData& d);
 
 Eigen::Matrix3d planar_inertia(const Eigen::Vector3d& q, const Vector9d& a);
 Eigen::Matrix3d planar_coriolis(const Eigen::Vector3d& q, const Eigen::Vector3d& qd,
-                                const Vector9d& a);  // Eq. C.14 choice
+                                const Vector9d& a);  // C by the choice of Eq. C.14
 Eigen::Vector3d planar_gravity(const Eigen::Vector3d& q, const Vector9d& a);
 
-// Y(q, q', q'_r, q''_r) a = H q''_r + C q'_r + g (Eq. 5.4).
+// Y(q, q', q'_r, q''_r) a = H q''_r + C q'_r + g (the regressor of Eq. 5.4).
 PlanarRegressor planar_regressor(const Eigen::Vector3d& q, const Eigen::Vector3d& qd,
                                  const Eigen::Vector3d& qd_r, const Eigen::Vector3d& qdd_r);
 

@@ -33,13 +33,13 @@ struct DhRow {
   double theta_offset = 0;
 };
 
-// Eq. B.1: Rot(x, alpha_{i-1}) Trans(a_{i-1}, 0, 0) Rot(z, theta_i) Trans(0, 0, d_i), in closed
-// form.
+// Rot(x, alpha_{i-1}) Trans(a_{i-1}, 0, 0) Rot(z, theta_i) Trans(0, 0, d_i) in closed form
+// (Eq. B.1).
 inline Eigen::Isometry3d dh_transform(const DhRow& row, double theta) {
   const double ct = std::cos(theta + row.theta_offset), st = std::sin(theta + row.theta_offset);
   const double ca = std::cos(row.alpha_prev), sa = std::sin(row.alpha_prev);
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() << ct, -st, 0, st * ca, ct * ca, -sa, st * sa, ct * sa, ca;
+  t.linear() << ct, -st, 0, st * ca, ct * ca, -sa, st * sa, ct * sa, ca;  // Eq. B.1
   t.translation() << row.a_prev, -row.d * sa, row.d * ca;
   return t;
 }

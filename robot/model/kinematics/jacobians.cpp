@@ -13,8 +13,8 @@ void joint_column(const Joint& jt, const Eigen::Isometry3d& child_pose, const Ei
     col.head<3>() += scale * axis;
     return;
   }
-  col.head<3>() += scale * axis.cross(p - child_pose.translation());
-  col.tail<3>() += scale * axis;
+  col.head<3>() += scale * axis.cross(p - child_pose.translation());  // Eq. D.9
+  col.tail<3>() += scale * axis;                                      // Eq. D.5
 }
 
 // Column that receives joint j's effect and the chain-rule factor (mimic joints follow a master).
@@ -48,7 +48,8 @@ void com_jacobian(const RobotModel& model, const std::vector<Eigen::Isometry3d>&
   double total = 0;
   for (const Link& l : model.links) total += l.inertial.mass;
   if (total <= 0) return;
-  // Each link's mass pulls on every joint between it and the root (Eq. 3.17 differentiated).
+  // Each link's mass pulls on every joint between it and the root (the CoM of Eq. 3.17,
+  // differentiated).
   for (size_t i = 0; i < model.links.size(); ++i) {
     const Inertial& in = model.links[i].inertial;
     if (in.mass <= 0) continue;
@@ -78,7 +79,8 @@ Matrix6d leg_jacobian(Side side, const LegAngles& q) {
   Matrix6d j;
   for (int i = 0; i < kLegJoints; ++i) {
     const Eigen::Vector3d z = leg_dh_sign(side, i) * f[i].linear().col(2);  // Eq. D.6
-    j.col(i) << z.cross(p - f[i].translation()), z;                         // Eq. D.9, D.5
+    j.col(i).head<3>() = z.cross(p - f[i].translation());                   // Eq. D.9
+    j.col(i).tail<3>() = z;                                                 // Eq. D.5
   }
   return j;
 }

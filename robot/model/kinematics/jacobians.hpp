@@ -14,7 +14,7 @@ namespace stride::model {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 using Jacobian6 = Eigen::Matrix<double, 6, Eigen::Dynamic>;
 
-// Twist of a point fixed in `link` in the root frame per joint velocity (Eq. D.5, D.9): one
+// Twist of a point fixed in `link` in the root frame per joint velocity (Eq. D.5, Eq. D.9): one
 // column per model joint; a mimic joint's effect is added to its master's column, so columns of
 // mimic and fixed joints stay zero. out must be 6 x model.joints.size() (not resized).
 void geometric_jacobian(const RobotModel& model, const std::vector<Eigen::Isometry3d>& poses,
@@ -25,7 +25,8 @@ void geometric_jacobian(const RobotModel& model, const std::vector<Eigen::Isomet
 void com_jacobian(const RobotModel& model, const std::vector<Eigen::Isometry3d>& poses,
                   Eigen::Matrix3Xd& out);
 
-// Sole twist in the torso frame per leg joint velocity (Eq. D.3-D.9); columns in leg order.
+// Sole twist in the torso frame per leg joint velocity (J of Eq. D.3, its columns by Eq. D.5,
+// Eq. D.6 and Eq. D.9); columns in leg order.
 Matrix6d leg_jacobian(Side side, const LegAngles& q);
 
 // The same twist expressed in the sole frame (the end-effector form of Eq. D.10).
