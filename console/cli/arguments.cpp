@@ -105,7 +105,9 @@ std::uint64_t ArgumentReader::unsigned_integer(const std::string& flag) {
 void ArgumentReader::finish() const {
   for (size_t i = 0; i < args_.size(); ++i)
     if (!used_.count(static_cast<int>(i)))
-      throw UsageError("stride " + command_ + ": unexpected argument " + quote(args_[i]));
+      throw UsageError("stride " + command_ + ": " +
+                       (args_[i].rfind("--", 0) == 0 ? "unknown" : "unexpected") + " argument " +
+                       quote(args_[i]));
 }
 
 }  // namespace stride::cli

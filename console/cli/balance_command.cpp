@@ -1,30 +1,24 @@
-// `stride balance <what> ...`: the balance analyses of thesis Ch. 7 from the command line.
-#include <cmath>
-#include <filesystem>
-#include <functional>
-#include <map>
-#include <optional>
+// `stride balance <what> ...`: the balance analyses of thesis Ch. 7 from the command line; the
+// analyses themselves are console/experiments/balance_analyses.
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "behaviours/balance/lipm_solution.hpp"
-#include "behaviours/balance/lqr_balance.hpp"
-#include "behaviours/balance/strategy_classifier.hpp"
+#include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
+#include "console/experiments/balance_analyses.hpp"
 #include "console/output/output_paths.hpp"
 #include "console/plot/run_figures.hpp"
 #include "robot/core/error.hpp"
-#include "robot/core/json_writer.hpp"
 #include "robot/core/number_text.hpp"
 #include "robot/core/quote.hpp"
 
 namespace stride::cli {
 
 namespace {
-using namespace stride::balance;
+using experiments::BalanceAnalysisOptions;
 
 constexpr const char* kUsage =
     "usage: stride balance classify|ankle-boundaries|closed-loop|hip|combined|lqr "
@@ -33,74 +27,49 @@ constexpr const char* kUsage =
     "[--q a,b,c,d] [--r a,b] [--duration s] [--dt s] [--json] [--csv out.csv] [--plots dir]";
 
 struct Options {
-  std::string what;
-  BalanceParams p;
-  std::optional<double> x0, v0;
-  PdGains gains{72, 12};
-  double x_set = 0.0;
-  std::optional<double> duration;
-  double dt = 1e-3;
-  std::vector<double> q{2000, 500, 1, 10}, r{4500000, 100};  // Figs. 7.13-7.14
+  BalanceAnalysisOptions analysis;
   bool json = false;
   std::string csv, plots;
 };
 
-double parse_number(const std::string& flag, const std::string& text) {
-  return stride::parse_number(text, flag);
-}
-
-std::vector<double> parse_list(const std::string& flag, const std::string& text, std::size_t n) {
+std::vector<double> number_list(ArgumentReader& a, const std::string& flag,
+                                const std::vector<double>& fallback) {
+  if (!a.has(flag)) return fallback;
+  const std::string text = a.text(flag);
   std::vector<double> out;
   std::stringstream ss(text);
-  for (std::string item; std::getline(ss, item, ',');) out.push_back(parse_number(flag, item));
-  if (out.size() != n)
-    throw UsageError(flag + " expects " + std::to_string(n) + " comma-separated numbers, got " +
-                     quote(text));
+  try {
+    for (std::string item; std::getline(ss, item, ',');)
+      out.push_back(stride::parse_number(item, "stride balance: " + flag));
+  } catch (const UsageError&) {
+    throw;
+  } catch (const Error& e) {
+    throw UsageError(e.what());  // a malformed number is a wrong command line
+  }
+  if (out.size() != fallback.size())
+    throw UsageError("stride balance: " + flag + " expects " + std::to_string(fallback.size()) +
+                     " comma-separated numbers, got " + quote(text));
   return out;
 }
 
-Options parse(Args args) {
-  if (args.empty()) throw Error("missing <what>; " + std::string(kUsage));
-  Options o;
-  o.what = args[0];
-  std::map<std::string, std::function<void(const std::string&)>> numeric = {
-      {"--x0", [&](auto& s) { o.x0 = parse_number("--x0", s); }},
-      {"--v0", [&](auto& s) { o.v0 = parse_number("--v0", s); }},
-      {"--kp", [&](auto& s) { o.gains.kp = parse_number("--kp", s); }},
-      {"--kd", [&](auto& s) { o.gains.kd = parse_number("--kd", s); }},
-      {"--x-set", [&](auto& s) { o.x_set = parse_number("--x-set", s); }},
-      {"--g", [&](auto& s) { o.p.g = parse_number("--g", s); }},
-      {"--z", [&](auto& s) { o.p.z_cm = parse_number("--z", s); }},
-      {"--mass", [&](auto& s) { o.p.mass = parse_number("--mass", s); }},
-      {"--zmp-min", [&](auto& s) { o.p.zmp_min = parse_number("--zmp-min", s); }},
-      {"--zmp-max", [&](auto& s) { o.p.zmp_max = parse_number("--zmp-max", s); }},
-      {"--inertia", [&](auto& s) { o.p.inertia = parse_number("--inertia", s); }},
-      {"--tau-f", [&](auto& s) { o.p.tau_forward = parse_number("--tau-f", s); }},
-      {"--tau-b", [&](auto& s) { o.p.tau_backward = parse_number("--tau-b", s); }},
-      {"--theta-max-f", [&](auto& s) { o.p.theta_max_forward = parse_number("--theta-max-f", s); }},
-      {"--theta-max-b",
-       [&](auto& s) { o.p.theta_max_backward = parse_number("--theta-max-b", s); }},
-      {"--theta0", [&](auto& s) { o.p.theta0 = parse_number("--theta0", s); }},
-      {"--theta-dot0", [&](auto& s) { o.p.theta_dot0 = parse_number("--theta-dot0", s); }},
-      {"--duration", [&](auto& s) { o.duration = parse_number("--duration", s); }},
-      {"--dt", [&](auto& s) { o.dt = parse_number("--dt", s); }},
-      {"--q", [&](auto& s) { o.q = parse_list("--q", s, 4); }},
-      {"--r", [&](auto& s) { o.r = parse_list("--r", s, 2); }},
-      {"--csv", [&](auto& s) { o.csv = s; }},
-      {"--plots", [&](auto& s) { o.plots = s; }},
-  };
-  for (std::size_t i = 1; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--json") {
-      o.json = true;
-      continue;
-    }
-    const auto it = numeric.find(a);
-    if (it == numeric.end()) throw UsageError("unknown argument " + quote(a));
-    if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
-    it->second(args[++i]);
-  }
-  validate(o.p);
+void read_model(ArgumentReader& a, balance::BalanceParams& p) {
+  for (const auto& [flag, field] : {std::pair{"--g", &p.g},
+                                    {"--z", &p.z_cm},
+                                    {"--mass", &p.mass},
+                                    {"--zmp-min", &p.zmp_min},
+                                    {"--zmp-max", &p.zmp_max},
+                                    {"--inertia", &p.inertia},
+                                    {"--tau-f", &p.tau_forward},
+                                    {"--tau-b", &p.tau_backward},
+                                    {"--theta-max-f", &p.theta_max_forward},
+                                    {"--theta-max-b", &p.theta_max_backward},
+                                    {"--theta0", &p.theta0},
+                                    {"--theta-dot0", &p.theta_dot0}})
+    *field = a.number_or(flag, *field);
+}
+
+void check(const BalanceAnalysisOptions& o) {
+  balance::validate(o.p);
   if (!(o.dt > 0) || o.dt > 0.1) throw UsageError("--dt expects a step in (0, 0.1] s");
   if (o.duration && (!(*o.duration > 0) || *o.duration > 60))
     throw UsageError("--duration expects a time in (0, 60] s");
@@ -108,356 +77,61 @@ Options parse(Args args) {
     throw UsageError("--duration / --dt: too many samples");
   if (o.x0.has_value() != o.v0.has_value() && o.what != "classify")
     throw UsageError("--x0 and --v0 go together");
+}
+
+Options parse(Args args) {
+  if (args.empty()) throw UsageError("missing <what>; " + std::string(kUsage));
+  ArgumentReader a(args, "balance");
+  Options o;
+  BalanceAnalysisOptions& b = o.analysis;
+  b.what = a.positional("what");
+  if (a.has("--x0")) b.x0 = a.number("--x0");
+  if (a.has("--v0")) b.v0 = a.number("--v0");
+  if (a.has("--duration")) b.duration = a.number("--duration");
+  b.gains.kp = a.number_or("--kp", b.gains.kp);
+  b.gains.kd = a.number_or("--kd", b.gains.kd);
+  b.x_set = a.number_or("--x-set", b.x_set);
+  b.dt = a.number_or("--dt", b.dt);
+  read_model(a, b.p);
+  b.q = number_list(a, "--q", b.q);
+  b.r = number_list(a, "--r", b.r);
+  o.csv = a.text_or("--csv", "");
+  o.plots = a.text_or("--plots", "");
+  o.json = a.flag("--json");
+  a.finish();
+  try {
+    check(b);
+  } catch (const Error& e) {  // a bad flag value, e.g. parameters that fail validation
+    throw UsageError(e.what());
+  }
   return o;
 }
 
-using plot::Figure;
-using plot::Run;
-
-struct Report {
-  std::ostringstream text;
-  JsonWriter json{JsonWriter::Style::Spaced};  // an open object: the fields of --json
-  plot::RunSet set;                            // columns: first is "t"
-  std::vector<Figure> figures;
-};
-
-std::string num(double v) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
-// The support polygon's borders the ZMP stays within (Sec. 7.2), drawn beside ZMP curves.
-std::vector<plot::Reference> sole_borders(const BalanceParams& p) {
-  return {{p.zmp_max, "front border of the sole"}, {p.zmp_min, "back border of the sole"}};
-}
-
-std::string state_name(const ComState& s) {
-  return "(" + num(s.x) + "," + num(s.v) + ")";
-}
-
-std::vector<ComState> cases(const Options& o, std::vector<ComState> thesis_defaults) {
-  if (o.v0) return {ComState{o.x0.value_or(0.0), *o.v0}};
-  return thesis_defaults;
-}
-
-void write_plan(JsonWriter& j, const BangBangPlan& b) {
-  j.begin_object().field("recoverable", b.recoverable).field("zmp", b.zmp);
-  j.field("tau", b.profile.tau).field("t1", b.profile.t1).field("t2", b.profile.t2);
-  j.field("theta_peak", b.theta_peak).end_object();
-}
-
-void write_interval(JsonWriter& j, double lo, double hi) {
-  j.begin_array().value(lo).value(hi).end_array();
-}
-
-void add_bang_bang_runs(Report& rep, const Options& o, const std::vector<ComState>& states,
-                        bool combined) {
-  rep.set.columns = {"t", "x", "v", "theta", "theta_dot", "tau", "zmp"};
-  const double T = o.duration.value_or(1.5);
-  rep.json.key("cases").begin_array();
-  for (const ComState& s : states) {
-    const BangBangPlan plan = combined ? plan_combined(o.p, s) : plan_hip(o.p, s);
-    Run run{state_name(s), {}};
-    for (long i = 0; i * o.dt <= T + 1e-12; ++i) {
-      const double t = i * o.dt;
-      const HipModelState h = bang_bang_state(o.p, s, plan, t);
-      run.rows.push_back({t, h.x, h.v, h.theta, h.theta_dot, h.tau, plan.zmp});
-    }
-    rep.set.runs.push_back(std::move(run));
-    rep.text << "  " << state_name(s) << ": capture point " << num(plan.capture_point) << ", "
-             << (plan.recoverable ? "recoverable" : "NOT recoverable") << ", zmp " << num(plan.zmp)
-             << ", tau " << num(plan.profile.tau) << " N m, t1 " << num(plan.profile.t1)
-             << " s, t2 " << num(plan.profile.t2) << " s, theta(t2) " << num(plan.theta_peak)
-             << " rad\n";
-    rep.json.begin_object().field("x0", s.x).field("v0", s.v).key("plan");
-    write_plan(rep.json, plan);
-    rep.json.end_object();
+void write_files(const Options& o, const experiments::BalanceReport& rep) {
+  if (!o.csv.empty()) plot::write_long_csv(rep.set, o.csv);
+  if (!o.plots.empty()) {
+    console::make_output_dir("--plots", o.plots);
+    for (const plot::Figure& f : rep.figures) plot::write_figure(rep.set, f, o.plots);
   }
-  rep.json.end_array();
 }
 
-Report run_command(const Options& o) {
-  Report rep;
-  const BalanceParams& p = o.p;
-  const double w = p.omega();
-  rep.json.begin_object().field("command", o.what).field("omega", w);
-  const PhaseLine l1 = ankle_front_boundary(p), l2 = ankle_back_boundary(p);
-  if (o.what == "classify") {
-    const ComState s{o.x0.value_or(0.0), o.v0.value_or(0.0)};
-    const Classification c = classify(p, s);
-    auto vel = [&](const CaptureInterval& i) {
-      return "xdot0 in [" + num(w * (i.lo - s.x)) + ", " + num(w * (i.hi - s.x)) + "]";
-    };
-    rep.text << "state " << state_name(s) << ", omega " << num(w) << " 1/s, capture point "
-             << num(c.capture_point) << " m\n"
-             << "  ankle    capture point in [" << num(c.ankle.lo) << ", " << num(c.ankle.hi)
-             << "] (" << vel(c.ankle) << "): " << (c.ankle_recovers ? "recovers" : "no") << "\n"
-             << "  hip      capture point in [" << num(c.hip.lo) << ", " << num(c.hip.hi) << "] ("
-             << vel(c.hip) << "): " << (c.hip_recovers ? "recovers" : "no") << ", t1 "
-             << num(c.hip_plan.profile.t1) << " s, t2 " << num(c.hip_plan.profile.t2) << " s\n"
-             << "  combined capture point in [" << num(c.combined.lo) << ", " << num(c.combined.hi)
-             << "] (" << vel(c.combined) << "): " << (c.combined_recovers ? "recovers" : "no")
-             << ", zmp " << num(c.combined_plan.zmp) << " m, t1 " << num(c.combined_plan.profile.t1)
-             << " s, t2 " << num(c.combined_plan.profile.t2) << " s\n"
-             << "strategy: " << to_string(c.strategy) << "\n";
-    rep.json.field("x0", s.x).field("v0", s.v).field("capture_point", c.capture_point);
-    rep.json.field("strategy", to_string(c.strategy));
-    rep.json.key("ankle").begin_object().key("interval");
-    write_interval(rep.json, c.ankle.lo, c.ankle.hi);
-    rep.json.field("recoverable", c.ankle_recovers).end_object();
-    for (const auto& [name, interval, plan] :
-         {std::tuple{"hip", c.hip, c.hip_plan}, {"combined", c.combined, c.combined_plan}}) {
-      rep.json.key(name).begin_object().key("interval");
-      write_interval(rep.json, interval.lo, interval.hi);
-      rep.json.key("plan");
-      write_plan(rep.json, plan);
-      rep.json.end_object();
-    }
-    Options sub = o;
-    sub.v0 = s.v;
-    sub.x0 = s.x;
-    if (c.strategy == Strategy::ankle) {
-      rep.set.columns = {"t", "x", "v", "zmp"};
-      Run run{state_name(s), {}};
-      for (long i = 0; i * o.dt <= o.duration.value_or(1.5) + 1e-12; ++i) {
-        const ComState st = lipm_state(s, w, c.ankle_result.forcing, i * o.dt);
-        run.rows.push_back({i * o.dt, st.x, st.v, c.ankle_result.zmp});
-      }
-      rep.set.runs.push_back(std::move(run));
-    } else {
-      Report tmp;
-      add_bang_bang_runs(tmp, sub, {s}, c.strategy != Strategy::hip);
-      rep.set.columns = tmp.set.columns;
-      rep.set.runs = std::move(tmp.set.runs);
-    }
-    rep.figures.push_back({"classify_com",
-                           "CoM, " + std::string(to_string(c.strategy)) + " strategy",
-                           "t [s]",
-                           "x [m]",
-                           {"x"},
-                           "",
-                           "",
-                           {}});
-  } else if (o.what == "ankle-boundaries") {
-    rep.text << "open-loop ankle strategy (Eq. 7.13), omega " << num(w) << " 1/s\n"
-             << "  l1: xdot = " << num(l1.slope) << " x + " << num(l1.intercept)
-             << "  (ZMP at the front border " << num(p.zmp_max) << " m)\n"
-             << "  l2: xdot = " << num(l2.slope) << " x + " << num(l2.intercept)
-             << "  (ZMP at the back border " << num(p.zmp_min) << " m)\n";
-    for (const auto& [name, l] : {std::pair{"l1", l1}, {"l2", l2}})
-      rep.json.key(name)
-          .begin_object()
-          .field("slope", l.slope)
-          .field("intercept", l.intercept)
-          .end_object();
-    std::vector<ComState> grid;
-    for (int k = -5; k <= 8; ++k) grid.push_back({0.0, 0.1 * k});
-    rep.set.columns = {"t", "x", "v", "zmp"};
-    for (const ComState& s : cases(o, grid)) {
-      const AnkleOpenLoopResult a = ankle_open_loop(p, s);
-      Run run{state_name(s) + (a.recoverable ? " stable" : " falls"), {}};
-      for (long i = 0; i * o.dt <= o.duration.value_or(0.6) + 1e-12; ++i) {
-        const ComState st = lipm_state(s, w, a.forcing, i * o.dt);
-        run.rows.push_back({i * o.dt, st.x, st.v, a.zmp});
-      }
-      rep.set.runs.push_back(std::move(run));
-      rep.text << "  " << state_name(s) << ": capture point " << num(a.capture_point) << " -> "
-               << (a.recoverable ? "recoverable" : "falls") << ", zmp " << num(a.zmp) << "\n";
-    }
-    rep.figures.push_back({"fig7_4_phase",
-                           "Ankle strategy, open loop (Fig. 7.4)",
-                           "x [m]",
-                           "xdot [m/s]",
-                           {},
-                           "x",
-                           "v",
-                           {{"l1", l1.slope, l1.intercept}, {"l2", l2.slope, l2.intercept}},
-                           "[-0.3:0.3]",
-                           "[-1:1.2]"});
-  } else if (o.what == "closed-loop") {
-    const ClosedLoopBoundaries c = closed_loop_boundaries(p, o.gains, o.x_set);
-    rep.text << "PD closed loop kp " << num(o.gains.kp) << ", kd " << num(o.gains.kd)
-             << " (Eq. 7.16, Eq. 7.18, Eq. 7.20): k1 " << num(c.k1) << ", k2 " << num(c.k2) << "\n";
-    rep.json.field("k1", c.k1).field("k2", c.k2).key("boundaries").begin_object();
-    for (const auto& [n, l] : {std::pair{"l1", c.l1}, {"l2", c.l2}, {"a", c.a}, {"b", c.b}}) {
-      rep.text << "  " << n << ": xdot = " << num(l.slope) << " x + " << num(l.intercept) << "\n";
-      rep.json.key(n).begin_object().field("slope", l.slope).field("intercept", l.intercept);
-      rep.json.end_object();
-    }
-    for (const auto& [n, pt] : {std::pair{"A", c.A}, {"B", c.B}, {"C", c.C}, {"D", c.D}}) {
-      rep.text << "  " << n << " = " << (pt ? state_name({pt->x, pt->v}) : "none (parallel)")
-               << "\n";
-      rep.json.key(n);
-      if (pt)
-        write_interval(rep.json, pt->x, pt->v);  // the point (x, xdot)
-      else
-        rep.json.null();
-    }
-    rep.json.end_object();
-    rep.set.columns = {"t", "x", "v", "zmp", "demanded_zmp", "ankle_torque"};
-    rep.json.key("cases").begin_array();
-    for (const ComState& s : cases(o, {{-0.4, 2.3}, {0.42, -2.3}, {-0.32, 2.3}, {0.37, -2.3}})) {
-      const ClosedLoopRun r =
-          simulate_closed_loop(p, o.gains, s, o.x_set, o.duration.value_or(3.0), o.dt);
-      Run run{state_name(s), {}};
-      for (const ClosedLoopSample& q : r.samples)
-        run.rows.push_back({q.t, q.x, q.v, q.zmp, q.demanded_zmp, q.ankle_torque});
-      rep.set.runs.push_back(std::move(run));
-      rep.text << "  " << state_name(s) << ": " << (r.converged ? "converges" : "diverges")
-               << (r.saturated ? " (ZMP saturated at the sole border)" : "") << "\n";
-      rep.json.begin_object().field("x0", s.x).field("v0", s.v);
-      rep.json.field("converged", r.converged).field("saturated", r.saturated).end_object();
-    }
-    rep.json.end_array();
-    rep.figures.push_back({"fig7_5_lines",
-                           "PD closed loop: boundaries and trajectories (Figs. 7.5-7.6)",
-                           "x [m]",
-                           "xdot [m/s]",
-                           {},
-                           "x",
-                           "v",
-                           {{"l1", c.l1.slope, c.l1.intercept},
-                            {"l2", c.l2.slope, c.l2.intercept},
-                            {"a", c.a.slope, c.a.intercept},
-                            {"b", c.b.slope, c.b.intercept}},
-                           "[-0.6:0.6]",
-                           "[-3:3]"});
-    rep.figures.push_back({.stem = "fig7_7_zmp",
-                           .title = "ZMP during PD recovery (Fig. 7.7)",
-                           .x_label = "t [s]",
-                           .y_label = "ZMP [m]",
-                           .quantities = {"zmp"},
-                           .references = sole_borders(p)});
-    rep.figures.push_back({"fig7_7_torque",
-                           "Ankle torque during PD recovery (Fig. 7.7)",
-                           "t [s]",
-                           "tau_a [N m]",
-                           {"ankle_torque"},
-                           "",
-                           "",
-                           {}});
-  } else if (o.what == "hip" || o.what == "combined") {
-    const bool combined = o.what == "combined";
-    const HipBoundaries h = hip_boundaries(p);
-    const CombinedBoundaries cb = combined_boundaries(p);
-    const double lo = combined ? cb.backward : h.backward, hi = combined ? cb.forward : h.forward;
-    rep.text << (combined ? "combined strategy (Eq. 7.37)" : "pure hip strategy (Eq. 7.30)")
-             << ": recoverable for capture point in [" << num(lo) << ", " << num(hi) << "] m\n"
-             << "  forward limit profile t1 " << num(h.forward_profile.t1) << " s, t2 "
-             << num(h.forward_profile.t2) << " s; backward t1 " << num(h.backward_profile.t1)
-             << " s, t2 " << num(h.backward_profile.t2) << " s\n";
-    rep.json.key("interval");
-    write_interval(rep.json, lo, hi);
-    add_bang_bang_runs(
-        rep, o,
-        cases(o, combined ? std::vector<ComState>{{0, 0.8}, {0, 1.1}}
-                          : std::vector<ComState>{{-0.1, 0.7}, {0.1, -0.6}, {0, -0.55}, {0, 0.8}}),
-        combined);
-    const std::string fig = combined ? "fig7_11" : "fig7_9";
-    const std::string tag = combined ? " (Fig. 7.11)" : " (Fig. 7.9)";
-    rep.figures.push_back(
-        {fig + "_com", "CoM" + tag, "t [s]", "x [m]", {"x"}, "", "", {}, "", "[-0.4:0.4]"});
-    rep.figures.push_back({.stem = fig + "_hip_angle",
-                           .title = "Hip angle" + tag,
-                           .x_label = "t [s]",
-                           .y_label = "theta [rad]",
-                           .quantities = {"theta"},
-                           .references = {{p.theta_max_forward, "hip pitch limit, forward"},
-                                          {p.theta_max_backward, "hip pitch limit, backward"}}});
-    rep.figures.push_back({fig + "_hip_rate",
-                           "Hip angular velocity" + tag,
-                           "t [s]",
-                           "thetadot [rad/s]",
-                           {"theta_dot"},
-                           "",
-                           "",
-                           {}});
-    rep.figures.push_back({.stem = fig + "_hip_torque",
-                           .title = "Hip torque" + tag,
-                           .x_label = "t [s]",
-                           .y_label = "tau_h [N m]",
-                           .quantities = {"tau"},
-                           .references = {{p.tau_forward, "tau_n-f, forward recovery"},
-                                          {p.tau_backward, "tau_n-b, backward recovery"}}});
-  } else if (o.what == "lqr") {
-    const LqrBalanceModel m = lqr_balance_model(p);
-    const Eigen::Matrix4d Q = Eigen::Vector4d(o.q[0], o.q[1], o.q[2], o.q[3]).asDiagonal();
-    const Eigen::Matrix2d R = Eigen::Vector2d(o.r[0], o.r[1]).asDiagonal();
-    const LqrSolution sol = lqr(m.A, m.B, Q, R);
-    const Eigen::Vector4d x0(o.x0.value_or(0.0), p.theta0, o.v0.value_or(0.9475), p.theta_dot0);
-    const auto samples = simulate_lqr(m, sol.K, x0, o.duration.value_or(3.0), o.dt);
-    Eigen::IOFormat fmt(8, 0, ", ", "\n", "    [", "]");
-    rep.text << "LQR (Eq. 7.38, Eq. 7.39), x0 = [x, theta, xdot, thetadot] = ["
-             << x0.transpose().format(Eigen::IOFormat(8, 0, ", ")) << "]\n"
-             << "  K =\n"
-             << sol.K.format(fmt) << "\n  S =\n"
-             << sol.S.format(fmt) << "\n  closed-loop poles: " << sol.closed_loop_poles.transpose()
-             << "\n  CARE residual norm: " << num(care_residual(m.A, m.B, Q, R, sol.S).norm())
-             << "\n";
-    rep.set.columns = {"t", "x", "theta", "xdot", "thetadot", "zmp", "tau"};
-    Run run{"lqr", {}};
-    double peak[6] = {0, 0, 0, 0, 0, 0};
-    for (const LqrSample& s : samples) {
-      run.rows.push_back(
-          {s.t, s.state(0), s.state(1), s.state(2), s.state(3), s.input(0), s.input(1)});
-      for (int i = 0; i < 6; ++i) peak[i] = std::max(peak[i], std::abs(run.rows.back()[i + 1]));
-    }
-    rep.text << "  peaks: |x| " << num(peak[0]) << " m, |theta| " << num(peak[1]) << " rad, |zmp| "
-             << num(peak[4]) << " m, |tau| " << num(peak[5]) << " N m; final |state| "
-             << num(samples.back().state.norm()) << "\n";
-    rep.json.key("K").begin_array();  // row by row
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 4; ++j) rep.json.value(sol.K(i, j));
-    rep.json.end_array();
-    rep.json.field("max_pole_real", sol.closed_loop_poles.real().maxCoeff());
-    rep.json.field("peak_x", peak[0]).field("peak_theta", peak[1]);
-    rep.json.field("peak_zmp", peak[4]).field("peak_tau", peak[5]);
-    rep.json.field("final_state_norm", samples.back().state.norm());
-    rep.set.runs.push_back(std::move(run));
-    rep.figures.push_back(
-        {"fig7_13_com", "CoM under LQR (Fig. 7.13)", "t [s]", "x [m]", {"x"}, "", "", {}});
-    Figure state{.stem = "fig7_14_state", .title = "LQR state (Fig. 7.14)", .x_label = "t [s]"};
-    state.panels = {{"x [m]", {"x"}, {}},
-                    {"theta [rad]", {"theta"}, {}},
-                    {"xdot [m/s]", {"xdot"}, {}},
-                    {"thetadot [rad/s]", {"thetadot"}, {}}};
-    rep.figures.push_back(state);
-    Figure inputs{.stem = "fig7_14_inputs", .title = "LQR inputs (Fig. 7.14)", .x_label = "t [s]"};
-    inputs.panels = {{"ZMP [m]", {"zmp"}, sole_borders(p)},
-                     {"tau_h [N m]",
-                      {"tau"},
-                      {{p.tau_forward, "hip torque, forward recovery"},
-                       {p.tau_backward, "hip torque, backward recovery"}}}};
-    rep.figures.push_back(inputs);
-  } else {
-    throw UsageError("unknown <what> " + quote(o.what) + "; " + kUsage);
+experiments::BalanceReport analyse(const BalanceAnalysisOptions& o) {
+  try {
+    return experiments::run_balance_analysis(o);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string(e.what()) + "; " + kUsage);
   }
-  return rep;
 }
 
 }  // namespace
 
 int balance_main(Args args, std::ostream& out, std::ostream& err) {
   try {
-    Options o;
-    try {
-      o = parse(args);
-    } catch (const UsageError&) {
-      throw;
-    } catch (const Error& e) {
-      throw UsageError(e.what());  // a bad flag value, e.g. parameters that fail validation
-    }
+    const Options o = parse(args);
     if (!o.csv.empty()) console::check_output_file("--csv", o.csv);
     if (!o.plots.empty()) console::check_output_dir("--plots", o.plots);
-    Report rep = run_command(o);
-    if (!o.csv.empty()) plot::write_long_csv(rep.set, o.csv);
-    if (!o.plots.empty()) {
-      console::make_output_dir("--plots", o.plots);
-      for (const Figure& f : rep.figures) plot::write_figure(rep.set, f, o.plots);
-    }
+    experiments::BalanceReport rep = analyse(o.analysis);
+    write_files(o, rep);
     if (o.json) {
       out << rep.json.end_object().str() << "\n";
     } else {

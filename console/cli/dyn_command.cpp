@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "console/cli/arguments.hpp"
+#include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/json_writer.hpp"
@@ -44,45 +46,43 @@ std::vector<Entry> spatial_entries() {
   return e;
 }
 
-int fail(std::ostream& err, const std::string& message) {
-  err << "stride dyn: " << message << "\n";
-  return 2;
+void print_json(std::ostream& out, const std::string& model, const std::vector<Entry>& e) {
+  JsonWriter j(JsonWriter::Style::Spaced);
+  j.begin_object().field("model", model).key("a").begin_array();
+  for (const Entry& x : e) j.value(x.value);
+  j.end_array().key("thesis").begin_array();
+  for (const Entry& x : e) j.value(parse_number(x.printed, "thesis value"));
+  out << j.end_array().end_object().str() << "\n";
+}
+
+void print(std::ostream& out, const std::string& model, bool json) {
+  const std::vector<Entry> e = model == "planar" ? planar_entries() : spatial_entries();
+  out << std::setprecision(6);
+  if (json) return print_json(out, model, e);
+  out << "swing-leg parameters, " << model << " model (thesis App. C, data of Sec. 5.4.1)\n";
+  for (size_t i = 0; i < e.size(); ++i)
+    out << "a" << std::left << std::setw(3) << i + 1 << std::setw(4) << e[i].name << std::setw(14)
+        << e[i].value << "thesis " << e[i].printed << "\n";
 }
 
 }  // namespace
 
 int dyn_main(Args args, std::ostream& out, std::ostream& err) {
-  if (args.empty() || args[0] != "params")
-    return fail(err, args.empty() ? "expected params" : quote(args[0]) + ": expected params");
-  std::string model;
-  bool json = false;
-  for (size_t i = 1; i < args.size(); ++i) {
-    if (args[i] == "--json") {
-      json = true;
-    } else if (args[i] == "--model") {
-      if (i + 1 >= args.size()) return fail(err, "--model: expected planar or 3d");
-      model = args[++i];
-    } else {
-      return fail(err, args[i] + ": unknown argument");
-    }
-  }
-  if (model != "planar" && model != "3d") return fail(err, "--model: expected planar or 3d");
-  const std::vector<Entry> e = model == "planar" ? planar_entries() : spatial_entries();
-  out << std::setprecision(6);
-  if (json) {
-    JsonWriter j(JsonWriter::Style::Spaced);
-    j.begin_object().field("model", model).key("a").begin_array();
-    for (const Entry& x : e) j.value(x.value);
-    j.end_array().key("thesis").begin_array();
-    for (const Entry& x : e) j.value(parse_number(x.printed, "thesis value"));
-    out << j.end_array().end_object().str() << "\n";
+  try {
+    if (args.empty() || args[0] != "params")
+      throw UsageError("stride dyn: " +
+                       (args.empty() ? "expected params" : quote(args[0]) + ": expected params"));
+    ArgumentReader a(args.subspan(1), "dyn");
+    const std::string model = a.text_or("--model", "");
+    const bool json = a.flag("--json");
+    a.finish();
+    if (model != "planar" && model != "3d")
+      throw UsageError("stride dyn: --model: expected planar or 3d");
+    print(out, model, json);
     return 0;
+  } catch (const Error& e) {
+    return report_error(e, err);
   }
-  out << "swing-leg parameters, " << model << " model (thesis App. C, data of Sec. 5.4.1)\n";
-  for (size_t i = 0; i < e.size(); ++i)
-    out << "a" << std::left << std::setw(3) << i + 1 << std::setw(4) << e[i].name << std::setw(14)
-        << e[i].value << "thesis " << e[i].printed << "\n";
-  return 0;
 }
 
 }  // namespace stride::cli

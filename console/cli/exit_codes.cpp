@@ -1,6 +1,7 @@
 #include "console/cli/exit_codes.hpp"
 
 #include <ostream>
+#include <string_view>
 
 namespace stride::cli {
 
@@ -11,7 +12,8 @@ int exit_code(const Error& e) {
 }
 
 int report_error(const Error& e, std::ostream& err, const char* prefix) {
-  err << prefix << e.what() << "\n";
+  const std::string_view what = e.what();
+  err << (what.starts_with(prefix) ? "" : prefix) << what << "\n";  // reader errors name it
   return exit_code(e);
 }
 

@@ -13,7 +13,8 @@ inline constexpr int kExitUsage = 2;       // the command line is wrong
 inline constexpr int kExitBadInput = 3;    // a file or command text cannot be read or parsed
 
 int exit_code(const Error& e);
-// Prints the error's line (after `prefix`, e.g. "stride balance: ") and returns its exit code.
+// Prints the error's line (after `prefix`, e.g. "stride balance: ", unless the line starts with
+// it) and returns its exit code.
 int report_error(const Error& e, std::ostream& err, const char* prefix = "");
 
 }  // namespace stride::cli

@@ -3,10 +3,10 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
-#include <map>
 #include <ostream>
 #include <sstream>
 
+#include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
 #include "console/cli/subcommand.hpp"
 #include "robot/core/data_dir.hpp"
@@ -32,30 +32,6 @@ constexpr const char* kUsage =
     "       stride kin com --q \"25 angles (LoLA order)\" | \"Name=value ...\" [--urdf file] "
     "[--json]";
 
-// --name value pairs after the verb; every option must be known and appear once.
-std::map<std::string, std::string> options(Args args, std::initializer_list<const char*> known) {
-  std::map<std::string, std::string> out;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    bool ok = false;
-    for (const char* k : known) ok |= a == k;
-    if (!ok) throw UsageError("stride kin: " + a + ": unknown argument");
-    if (a == "--json") {
-      out[a] = "1";
-      continue;
-    }
-    if (i + 1 >= args.size()) throw UsageError("stride kin: " + a + ": expected a value");
-    out[a] = args[++i];
-  }
-  return out;
-}
-
-std::string required(const std::map<std::string, std::string>& o, const std::string& name) {
-  auto it = o.find(name);
-  if (it == o.end()) throw UsageError("stride kin: " + name + ": missing");
-  return it->second;
-}
-
 std::vector<double> numbers(const std::string& text, const std::string& name, size_t expected) {
   std::istringstream in(text);
   std::vector<double> v;
@@ -73,8 +49,8 @@ std::vector<double> numbers(const std::string& text, const std::string& name, si
   return v;
 }
 
-NaoChain chain_option(const std::map<std::string, std::string>& o) {
-  const std::string name = required(o, "--chain");
+NaoChain chain_option(ArgumentReader& a) {
+  const std::string name = a.text("--chain");
   const auto c = chain_from_name(name);
   if (!c)
     throw UsageError("stride kin: --chain: " + quote(name) +
@@ -122,17 +98,22 @@ std::string default_urdf() {
 }
 
 int fk(Args args, std::ostream& out) {
-  const auto o = options(args, {"--chain", "--q", "--json"});
-  const NaoChain c = chain_option(o);
-  const auto q = numbers(required(o, "--q"), "--q", chain_joints(c).size());
-  print_pose(out, chain_fk(c, q), o.count("--json"));
+  ArgumentReader a(args, "kin");
+  const NaoChain c = chain_option(a);
+  const auto q = numbers(a.text("--q"), "--q", chain_joints(c).size());
+  const bool json = a.flag("--json");
+  a.finish();
+  print_pose(out, chain_fk(c, q), json);
   return 0;
 }
 
 int ik(Args args, std::ostream& out) {
-  const auto o = options(args, {"--chain", "--pose", "--urdf", "--json"});
-  const NaoChain c = chain_option(o);
-  const Eigen::Isometry3d target = pose_from(numbers(required(o, "--pose"), "--pose", 6));
+  ArgumentReader a(args, "kin");
+  const NaoChain c = chain_option(a);
+  const Eigen::Isometry3d target = pose_from(numbers(a.text("--pose"), "--pose", 6));
+  const std::string urdf = a.text_or("--urdf", default_urdf());
+  const bool json = a.flag("--json");
+  a.finish();
   const auto ids = chain_joints(c);
   std::vector<double> q(ids.size());
   bool reachable = true;
@@ -143,7 +124,7 @@ int ik(Args args, std::ostream& out) {
     reachable = r.reachable;
     residual = r.position_error;
   } else {  // arms and head: damped least squares on the URDF, end effector as chain_fk's
-    const RobotModel m = load_urdf(o.count("--urdf") ? o.at("--urdf") : default_urdf());
+    const RobotModel m = load_urdf(urdf);
     const NaoJointMap map = make_nao_joint_map(m);
     const char* link = c == NaoChain::Head ? "Head" : c == NaoChain::LArm ? "LHand" : "RHand";
     const Eigen::Vector3d point =
@@ -157,7 +138,7 @@ int ik(Args args, std::ostream& out) {
     reachable = r.converged;
     residual = r.error;
   }
-  if (o.count("--json")) {
+  if (json) {
     JsonWriter j(JsonWriter::Style::Spaced);
     j.begin_object().field("reachable", reachable).field("residual", residual);
     j.key("q").begin_object();
@@ -172,8 +153,11 @@ int ik(Args args, std::ostream& out) {
 }
 
 int com(Args args, std::ostream& out) {
-  const auto o = options(args, {"--q", "--urdf", "--json"});
-  const std::string text = required(o, "--q");
+  ArgumentReader a(args, "kin");
+  const std::string text = a.text("--q");
+  const std::string urdf = a.text_or("--urdf", default_urdf());
+  const bool json = a.flag("--json");
+  a.finish();
   std::array<double, hal::kNumJoints> lola{};
   if (text.find('=') != std::string::npos) {
     std::istringstream in(text);
@@ -189,13 +173,13 @@ int com(Args args, std::ostream& out) {
     const auto v = numbers(text, "--q", hal::kNumJoints);
     std::copy(v.begin(), v.end(), lola.begin());
   }
-  const RobotModel m = load_urdf(o.count("--urdf") ? o.at("--urdf") : default_urdf());
+  const RobotModel m = load_urdf(urdf);
   JointVector q;
   joints_from_lola(m, make_nao_joint_map(m), lola, q);
   std::vector<Eigen::Isometry3d> poses;
   link_poses(m, q, poses);
   const Eigen::Vector3d c = centre_of_mass(m, poses);
-  if (o.count("--json")) {
+  if (json) {
     JsonWriter j(JsonWriter::Style::Spaced);
     j.begin_object().key("com").numbers(c).field("mass", m.total_mass()).end_object();
     out << j.str() << "\n";

@@ -50,33 +50,20 @@ double parse_period(const std::string& text) {
 }
 
 PatternOptions parse_options(Args args) {
+  ArgumentReader a(args, "pattern");
   PatternOptions o;
+  if (a.has("--preset")) o.params = walking::preset(a.text("--preset"));
   std::vector<std::pair<std::string, std::string>> sets;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw Error(a + ": missing value");
-      return args[++i];
-    };
-    if (a == "--preset") {
-      o.params = walking::preset(value());
-    } else if (a == "--set") {
-      const std::string& kv = value();
-      const std::size_t eq = kv.find('=');
-      if (eq == std::string::npos) throw UsageError("--set: expected name=value, got " + quote(kv));
-      sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-    } else if (a == "--conventional") {
-      o.conventional = true;
-    } else if (a == "--dt") {
-      o.dt = parse_period(value());
-    } else if (a == "--csv") {
-      o.csv = value();
-    } else if (a == "--plots") {
-      o.plots = value();
-    } else {
-      throw Error("unknown argument " + quote(a));
-    }
+  for (const std::string& kv : a.texts("--set")) {
+    const std::size_t eq = kv.find('=');
+    if (eq == std::string::npos) throw UsageError("--set: expected name=value, got " + quote(kv));
+    sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
   }
+  o.conventional = a.flag("--conventional");
+  if (a.has("--dt")) o.dt = parse_period(a.text("--dt"));
+  o.csv = a.text_or("--csv", "");
+  o.plots = a.text_or("--plots", "");
+  a.finish();
   // Step counts derive their levels from V_min/V_max, so they are applied last.
   auto is_count = [](const auto& kv) {
     return kv.first.ends_with("_steps") && kv.first != "steps";
@@ -227,8 +214,7 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
     walk.reserve(samples.size());
     for (const PatternSample& s : samples) walk.push_back({s, walking::leg_joints(s)});
   } catch (const Error& e) {
-    err << "stride pattern: " << e.what() << "\n";
-    return 2;
+    return report_error(UsageError(e.what()), err, "stride pattern: ");
   }
   try {
     if (!o.csv.empty()) {
