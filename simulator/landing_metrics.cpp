@@ -81,4 +81,44 @@ LandingMetricsResult summarize_touchdowns(const std::vector<Touchdown>& touchdow
   return r;
 }
 
+double vertical_floor_force(const PhysicsWorld& world, int robot, int link) {
+  double f = 0;
+  for (const ContactRecord& c : world.contacts()) {
+    const bool is_a = c.a->robot == robot && c.a->link == link;
+    const bool is_b = c.b->robot == robot && c.b->link == link;
+    if (is_a == is_b) continue;
+    f += is_a ? c.force_on_a.z() : c.force_on_b.z();
+  }
+  return f;
+}
+
+LandingTraceSummary summarize_landing_trace(const std::vector<std::pair<double, double>>& force,
+                                            double period, double end) {
+  // A rigid contact stops the sole within one step, so a single step's force is an impulse over
+  // 1 ms; forces are compared as 10 ms means, the scale a sole's FSRs and filter see (Sec. 6.3).
+  LandingTraceSummary out;
+  bool touching = false;
+  double last_sum = 0;
+  int last_n = 0;
+  for (size_t i = 0; i < force.size(); ++i) {
+    const auto [t, f] = force[i];
+    if (out.touchdown < 0 && f > 1.0) out.touchdown = t;
+    if (out.touchdown >= 0) {
+      const double since = t - out.touchdown;
+      if (since < 0.01 - 1e-9) out.impulse += f * period;
+      if (since <= 0.2 && i >= 9) {
+        double mean = 0;
+        for (size_t k = i - 9; k <= i; ++k) mean += force[k].second / 10;
+        if (mean > out.peak_force) out.peak_force = mean, out.peak_at = since;
+      }
+      if (touching && f < 0.1) ++out.lift_offs;  // the sole came free after carrying load
+      if (f > 1.0) touching = true;
+      if (f < 0.1) touching = false;
+    }
+    if (t > end - 0.1) last_sum += f, ++last_n;
+  }
+  out.final_force = last_n ? last_sum / last_n : 0;
+  return out;
+}
+
 }  // namespace stride::sim

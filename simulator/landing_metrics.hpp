@@ -7,10 +7,12 @@
 // summary of the touch-downs after the walk's start as `landing.<field>`.
 #include <array>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "robot/framework/reflect.hpp"
 #include "simulator/simulated_robot.hpp"
+#include "simulator/world/physics_world.hpp"
 
 namespace stride::sim {
 
@@ -43,6 +45,25 @@ struct LandingMetricsResult {
 
 // The means, maxima and rebound count of the touch-downs at or after time `from` (s).
 LandingMetricsResult summarize_touchdowns(const std::vector<Touchdown>& touchdowns, double from);
+
+// The floor's vertical force (N, world z, pushing up) on one link of one robot, summed over the
+// solver's contacts of this step: the trace a single landing is read from.
+double vertical_floor_force(const PhysicsWorld& world, int robot, int link);
+
+// One landing read from a per-frame trace of the vertical floor force (a foot set down once, the
+// Ch. 6 study): the same 10 ms impulse and 10 ms means as a touch-down above, looked at for 0.2 s.
+struct LandingTraceSummary {
+  double touchdown = -1;   // s, first sample above the contact load
+  double impulse = 0;      // N s the floor gave in the 10 ms from touchdown
+  double peak_force = 0;   // N, largest 10 ms mean of the force in the 0.2 s after it
+  double peak_at = 0;      // s after touchdown (end of that 10 ms window)
+  int lift_offs = 0;       // times the sole came free (< 0.1 N) after carrying load
+  double final_force = 0;  // N, mean over the trace's last 0.1 s before `end`
+};
+
+// `trace`: (time s, force N) once per control frame of `period` s; `end`: the run's length.
+LandingTraceSummary summarize_landing_trace(const std::vector<std::pair<double, double>>& trace,
+                                            double period, double end);
 
 class LandingMetrics {
  public:

@@ -7,6 +7,7 @@
 #include "console/sweep/run_plan.hpp"
 #include "robot/core/error.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
+#include "simulator/landing_metrics.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::experiments {
@@ -14,18 +15,6 @@ namespace {
 
 constexpr std::array<const char*, 6> kLegNames = {"LHipYawPitch", "LHipRoll",    "LHipPitch",
                                                   "LKneePitch",   "LAnklePitch", "LAnkleRoll"};
-
-// Vertical force the floor pushes the link up with, from the solver's contact forces.
-double floor_force_on(const sim::PhysicsWorld& world, int robot, int link) {
-  double f = 0;
-  for (const sim::ContactRecord& c : world.contacts()) {
-    const bool is_a = c.a->robot == robot && c.a->link == link;
-    const bool is_b = c.b->robot == robot && c.b->link == link;
-    if (is_a == is_b) continue;
-    f += is_a ? c.force_on_a.z() : c.force_on_b.z();
-  }
-  return f;
-}
 
 std::string vector_text(const Eigen::Vector3d& v) {
   return "[" + sweep::number_text(v.x()) + ", " + sweep::number_text(v.y()) + ", " +
@@ -83,37 +72,19 @@ LandingResult run_landing(const LandingOptions& o) {
   LandingResult out;
   std::vector<std::pair<double, double>> force;  // time, vertical floor force
   session.set_frame_observer(0, [&](sim::SimulatedRobot& r) {
-    force.emplace_back(sim.time(), floor_force_on(sim.world(), 0, foot));
+    force.emplace_back(sim.time(), sim::vertical_floor_force(sim.world(), 0, foot));
     const hal::ActuatorFrame& cmd = r.latest_commands();
     for (int k = 0; k < hal::kNumJoints; ++k)  // the impedance law's torques
       if (cmd.mode[k] == hal::ServoMode::Torque)
         out.max_torque = std::max(out.max_torque, std::abs(cmd.torque[k]));
   });
   sim.run_for(o.duration);
-  // A rigid contact stops the sole within one step, so a single step's force is an impulse over
-  // 1 ms; forces are compared as 10 ms means, the scale a sole's FSRs and filter see (Sec. 6.3).
-  bool touching = false;
-  double last_sum = 0;
-  int last_n = 0;
-  for (size_t i = 0; i < force.size(); ++i) {
-    const auto [t, f] = force[i];
-    if (out.touchdown < 0 && f > 1.0) out.touchdown = t;
-    if (out.touchdown >= 0) {
-      const double since = t - out.touchdown;
-      if (since < 0.01 - 1e-9) out.impulse += f * sim.scene().robots[0].period;
-      if (since <= 0.2 && i >= 9) {
-        double mean = 0;
-        for (size_t k = i - 9; k <= i; ++k) mean += force[k].second / 10;
-        if (mean > out.peak_force) out.peak_force = mean, out.peak_at = since;
-      }
-      if (touching && f < 0.1) ++out.lift_offs;  // the sole came free after carrying load
-      if (f > 1.0) touching = true;
-      if (f < 0.1) touching = false;
-    }
-    if (t > o.duration - 0.1) last_sum += f, ++last_n;
-  }
+  const sim::LandingTraceSummary l =
+      sim::summarize_landing_trace(force, sim.scene().robots[0].period, o.duration);
+  out.touchdown = l.touchdown, out.impulse = l.impulse;
+  out.peak_force = l.peak_force, out.peak_at = l.peak_at;
+  out.lift_offs = l.lift_offs, out.final_force = l.final_force;
   out.trace = std::move(force);
-  out.final_force = last_n ? last_sum / last_n : 0;
   return out;
 }
 
