@@ -25,4 +25,15 @@ inline Eigen::Vector2d calibrated_gyro_rate(const Eigen::Vector2d& measured,
   return measured - offset;
 }
 
+// One gyro stream calibrated frame by frame, as GyroCalibration runs it and an offline replay of
+// a recorded walk reruns it: the offset starts at the first sample (or 0), then the
+// offset and the calibrated rate above.
+struct GyroCalibrator {
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
+  bool started = false;
+  // A raw (roll, pitch) rate in; the calibrated rate out.
+  Eigen::Vector2d calibrate(const Eigen::Vector2d& measured, double alpha,
+                            bool start_at_first_sample);
+};
+
 }  // namespace stride::behaviours

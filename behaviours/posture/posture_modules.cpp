@@ -25,18 +25,16 @@ class GyroCalibration final : public Module {
         out_(c.provide<CalibratedGyro>()) {}
 
   void update() override {
-    const Eigen::Vector2d measured = inertial_.gyro.head<2>();
-    if (!started_) out_.offset = initial_gyro_offset(measured, params_.start_at_first_sample);
-    started_ = true;
-    out_.offset = updated_gyro_offset(out_.offset, measured, params_.alpha);  // Eq. 4.1, Eq. 4.2
-    out_.rate = calibrated_gyro_rate(measured, out_.offset);                  // Eq. 4.3, Eq. 4.4
+    out_.rate = calibrator_.calibrate(inertial_.gyro.head<2>(), params_.alpha,
+                                      params_.start_at_first_sample);
+    out_.offset = calibrator_.offset;
   }
 
  private:
   const InertialSensorData& inertial_;
   const GyroCalibrationParameters& params_;
   CalibratedGyro& out_;
-  bool started_ = false;
+  GyroCalibrator calibrator_;
 };
 
 class TorsoStateEstimator final : public Module {
@@ -50,20 +48,16 @@ class TorsoStateEstimator final : public Module {
         debug_(c.debug_request("posture:kalman")) {}
 
   void update() override {
-    if (!started_) {
-      filter_ = initial_torso_filter(params_.initial_variance);
-      started_ = true;
-    }
-    // Measurement y_k = x_k + v (Eq. 4.7, C = I): IMU angles and calibrated rates.
-    const TorsoVector y(inertial_.angles.y(), inertial_.angles.x(), gyro_.rate.y(), gyro_.rate.x());
-    torso_kalman_step(filter_, torso_transition(frame_.period), params_.q_diagonal,
-                      params_.r_diagonal, y);
-    out_.pitch = filter_.x[0];
-    out_.roll = filter_.x[1];
-    out_.pitch_rate = filter_.x[2];
-    out_.roll_rate = filter_.x[3];
-    out_.variance = filter_.p.diagonal();
-    out_.gain = filter_.gain.diagonal();
+    const TorsoVector y = torso_measurement(inertial_.angles, gyro_.rate);
+    estimator_.step(frame_.period, params_.q_diagonal, params_.r_diagonal, params_.initial_variance,
+                    y);
+    const TorsoKalmanFilter& f = estimator_.filter;
+    out_.pitch = f.x[0];
+    out_.roll = f.x[1];
+    out_.pitch_rate = f.x[2];
+    out_.roll_rate = f.x[3];
+    out_.variance = f.p.diagonal();
+    out_.gain = f.gain.diagonal();
     debug_.show({{"measured_pitch", y[0]},
                  {"pitch", out_.pitch},
                  {"measured_roll", y[1]},
@@ -81,8 +75,7 @@ class TorsoStateEstimator final : public Module {
   const TorsoStateEstimatorParameters& params_;
   TorsoState& out_;
   DebugRequest debug_;  // measurement beside estimate (Eq. 4.7's y_k and x_k|k)
-  TorsoKalmanFilter filter_;
-  bool started_ = false;
+  TorsoEstimator estimator_;
 };
 
 // Hip or ankle strategy (Sec. 4.3.3) on the walking joint targets.

@@ -28,4 +28,16 @@ void torso_kalman_step(TorsoKalmanFilter& f, const TorsoMatrix& a, const TorsoVe
   f.p = (TorsoMatrix::Identity() - f.gain) * p_prior;  // step 5
 }
 
+TorsoVector torso_measurement(const Eigen::Vector2d& angles, const Eigen::Vector2d& rates) {
+  return TorsoVector(angles.y(), angles.x(), rates.y(), rates.x());
+}
+
+void TorsoEstimator::step(double period, const TorsoVector& q_diagonal,
+                          const TorsoVector& r_diagonal, double initial_variance,
+                          const TorsoVector& y) {
+  if (!started) filter = initial_torso_filter(initial_variance);
+  started = true;
+  torso_kalman_step(filter, torso_transition(period), q_diagonal, r_diagonal, y);
+}
+
 }  // namespace stride::behaviours

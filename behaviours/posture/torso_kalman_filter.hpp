@@ -25,4 +25,17 @@ TorsoMatrix torso_transition(double period);
 void torso_kalman_step(TorsoKalmanFilter& f, const TorsoMatrix& a, const TorsoVector& q_diagonal,
                        const TorsoVector& r_diagonal, const TorsoVector& y);
 
+// Measurement y_k = x_k + v (Eq. 4.7, C = I) from the IMU's angles and the calibrated gyro
+// rates, both ordered (roll, pitch) as the sensors give them; the state puts pitch first.
+TorsoVector torso_measurement(const Eigen::Vector2d& angles, const Eigen::Vector2d& rates);
+
+// The filter run frame by frame, as TorsoStateEstimator runs it and an offline replay reruns it:
+// P_{0|0} = L * I at the first frame, then one predict/update cycle per frame.
+struct TorsoEstimator {
+  TorsoKalmanFilter filter;
+  bool started = false;
+  void step(double period, const TorsoVector& q_diagonal, const TorsoVector& r_diagonal,
+            double initial_variance, const TorsoVector& y);
+};
+
 }  // namespace stride::behaviours

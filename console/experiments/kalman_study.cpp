@@ -12,19 +12,11 @@ namespace stride::experiments {
 KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start_at_first_sample) {
   KalmanSeries s;
   s.period = r.period;
-  // (roll, pitch) rates as the gyro orders them
-  auto gyro = [](const console::WalkFrame& f) {
-    return Eigen::Vector2d(f.gyro_roll, f.gyro_pitch);
-  };
-  if (r.frames.empty()) return s;
-  Eigen::Vector2d offset =
-      behaviours::initial_gyro_offset(gyro(r.frames.front()), start_at_first_sample);
+  behaviours::GyroCalibrator gyro;  // GyroCalibration's own steps, replayed
   for (const console::WalkFrame& f : r.frames) {
-    const Eigen::Vector2d measured = gyro(f);
-    // The running offset of Eq. 4.1 and Eq. 4.2.
-    offset = behaviours::updated_gyro_offset(offset, measured, gyro_alpha);
-    const Eigen::Vector2d rate = behaviours::calibrated_gyro_rate(measured, offset);  // 4.3-4.4
-    s.y.push_back({f.imu_pitch, f.imu_roll, rate.y(), rate.x()});
+    const Eigen::Vector2d rate = gyro.calibrate(Eigen::Vector2d(f.gyro_roll, f.gyro_pitch),
+                                                gyro_alpha, start_at_first_sample);
+    s.y.push_back(behaviours::torso_measurement(Eigen::Vector2d(f.imu_roll, f.imu_pitch), rate));
     s.truth.push_back({f.true_pitch, f.true_roll});
     s.truth_rate.push_back({f.true_pitch_rate, f.true_roll_rate});
   }
@@ -33,13 +25,12 @@ KalmanSeries kalman_series(const WalkRecording& r, double gyro_alpha, bool start
 
 std::vector<Eigen::Vector4d> filter_series(const KalmanSeries& s, const Eigen::Vector4d& q,
                                            const Eigen::Vector4d& r, double initial_variance) {
-  behaviours::TorsoKalmanFilter f = behaviours::initial_torso_filter(initial_variance);
-  const behaviours::TorsoMatrix a = behaviours::torso_transition(s.period);
+  behaviours::TorsoEstimator estimator;  // TorsoStateEstimator's own steps, replayed
   std::vector<Eigen::Vector4d> out;
   out.reserve(s.y.size());
   for (const Eigen::Vector4d& y : s.y) {
-    behaviours::torso_kalman_step(f, a, q, r, y);
-    out.push_back(f.x);
+    estimator.step(s.period, q, r, initial_variance, y);
+    out.push_back(estimator.filter.x);
   }
   return out;
 }
