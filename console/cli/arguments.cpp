@@ -1,5 +1,6 @@
 #include "console/cli/arguments.hpp"
 
+#include <algorithm>
 #include <ostream>
 
 #include "behaviours/module_catalogue.hpp"
@@ -100,6 +101,12 @@ std::uint64_t ArgumentReader::unsigned_integer(const std::string& flag) {
   } catch (const Error& e) {
     throw UsageError(e.what());
   }
+}
+
+void ArgumentReader::only(std::initializer_list<std::string_view> known) const {
+  for (const std::string& a : args_)
+    if (a.rfind("--", 0) == 0 && std::find(known.begin(), known.end(), a) == known.end())
+      throw UsageError("stride " + command_ + ": unknown argument " + quote(a));
 }
 
 void ArgumentReader::finish() const {

@@ -1,9 +1,11 @@
 #pragma once
 // Reading `--flag value` command lines strictly: unknown flags and bad values are one-line errors.
 #include <cstdint>
+#include <initializer_list>
 #include <iosfwd>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "console/cli/subcommand.hpp"
@@ -28,6 +30,8 @@ class ArgumentReader {
   double number(const std::string& flag);
   double number_or(const std::string& flag, double fallback);
   std::uint64_t unsigned_integer(const std::string& flag);
+  // Throws for a `--flag` not in `known` (before any other error, so the line names it).
+  void only(std::initializer_list<std::string_view> known) const;
   // Throws if anything was not consumed.
   void finish() const;
 

@@ -99,6 +99,7 @@ std::string default_urdf() {
 
 int fk(Args args, std::ostream& out) {
   ArgumentReader a(args, "kin");
+  a.only({"--chain", "--q", "--json"});
   const NaoChain c = chain_option(a);
   const auto q = numbers(a.text("--q"), "--q", chain_joints(c).size());
   const bool json = a.flag("--json");
@@ -109,6 +110,7 @@ int fk(Args args, std::ostream& out) {
 
 int ik(Args args, std::ostream& out) {
   ArgumentReader a(args, "kin");
+  a.only({"--chain", "--pose", "--urdf", "--json"});
   const NaoChain c = chain_option(a);
   const Eigen::Isometry3d target = pose_from(numbers(a.text("--pose"), "--pose", 6));
   const std::string urdf = a.text_or("--urdf", default_urdf());
@@ -154,6 +156,7 @@ int ik(Args args, std::ostream& out) {
 
 int com(Args args, std::ostream& out) {
   ArgumentReader a(args, "kin");
+  a.only({"--q", "--urdf", "--json"});
   const std::string text = a.text("--q");
   const std::string urdf = a.text_or("--urdf", default_urdf());
   const bool json = a.flag("--json");
