@@ -6,8 +6,6 @@
 
 #include "behaviours/posture/posture_representations.hpp"
 #include "behaviours/posture/walking_joint_request.hpp"
-#include "behaviours/walking/modules/pattern_walk.hpp"
-#include "robot/framework/text.hpp"
 #include "robot/representations/joint_request.hpp"
 #include "robot/runtime/nao_io_modules.hpp"
 
@@ -30,19 +28,8 @@ void fill_nan(WalkFrame& f) {
 
 std::optional<WalkPatternInfo> walk_pattern_info(SimSession& session) {
   Runtime* rt = session.simulation().robot_count() > 0 ? session.runtime(0) : nullptr;
-  if (!rt || !on_blackboard(*rt, "WalkingJointRequest")) return std::nullopt;
-  WalkPatternInfo info;
-  info.module = rt->provider_of("WalkingJointRequest");
-  // PushRecoveryWalk plays PatternWalk's pattern (moved by its recovery steps) from `walk.*`.
-  const bool recovery = info.module == "PushRecoveryWalk";
-  if (info.module != "PatternWalk" && info.module != "ConventionalWalk" && !recovery)
-    return std::nullopt;
-  update_from_text(info.parameters, rt->get("module:" + info.module + (recovery ? ".walk" : "")));
-  const walking::PatternParameters p = behaviours::walk_pattern_parameters(info.parameters);
-  info.duration = info.module != "ConventionalWalk" ? walking::StretchedKneePattern(p).duration()
-                                                    : walking::ConventionalPattern(p).duration();
-  info.start_delay = info.parameters.start_delay;
-  return info;
+  if (!rt) return std::nullopt;
+  return behaviours::walk_pattern_info(*rt);
 }
 
 WalkFrameObserver::WalkFrameObserver(SimSession& session)
@@ -52,13 +39,7 @@ WalkFrameObserver::WalkFrameObserver(SimSession& session, std::optional<WalkPatt
   if (session.simulation().robot_count() == 0) return;
   rt_ = session.runtime(0);
   info_ = std::move(pattern);
-  if (info_) {
-    const walking::PatternParameters p = behaviours::walk_pattern_parameters(info_->parameters);
-    if (info_->module != "ConventionalWalk")
-      pattern_.emplace(walking::StretchedKneePattern(p));
-    else
-      pattern_.emplace(walking::ConventionalPattern(p));
-  }
+  if (info_) pattern_.emplace(*info_);
   if (rt_) {
     has_torso_state_ = on_blackboard(*rt_, "TorsoState");
     has_walking_request_ = on_blackboard(*rt_, "WalkingJointRequest");
@@ -92,11 +73,9 @@ void WalkFrameObserver::joints(WalkFrame& f) const {
 
 void WalkFrameObserver::pattern_columns(WalkFrame& f, double t) {
   if (!pattern_) return;
-  const double t_pattern = behaviours::pattern_time(t, *first_time_, info_->start_delay);
-  const walking::PatternSample plan =
-      std::visit([&](const auto& p) { return p.sample(std::max(t_pattern, 0.0)); }, *pattern_);
-  f.pattern_t = t_pattern;
-  f.waist_v_ref = t_pattern >= 0 ? plan.waist_velocity.x() : 0;
+  const behaviours::PlannedWalkSample plan = pattern_->at(t, *first_time_);
+  f.pattern_t = plan.pattern_t;
+  f.waist_v_ref = plan.waist_velocity_x;
   f.zmp_ref_x = origin_x_ + plan.zmp.x();
   f.zmp_ref_y = origin_y_ + plan.zmp.y();
 }

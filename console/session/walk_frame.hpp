@@ -7,10 +7,8 @@
 // never by replacing its controller, so a scene's timed changes still apply.
 #include <optional>
 #include <string>
-#include <variant>
 
-#include "behaviours/walking/modules/walk_parameters.hpp"
-#include "behaviours/walking/pattern/walking_pattern.hpp"
+#include "behaviours/walking/modules/walk_pattern_replay.hpp"
 #include "console/session/sim_session.hpp"
 #include "robot/framework/reflect.hpp"
 
@@ -41,14 +39,8 @@ struct WalkFrame {
   static constexpr auto fields();
 };
 
-// The walking pattern robot 0's controller plays (PatternWalk, PushRecoveryWalk or
-// ConventionalWalk), read from its parameters when the observer starts.
-struct WalkPatternInfo {
-  std::string module;      // PatternWalk or ConventionalWalk
-  double start_delay = 0;  // s after the first control frame
-  double duration = 0;     // s
-  behaviours::WalkParameters parameters;
-};
+// The walking pattern robot 0's controller plays (behaviours/walking/modules/walk_pattern_replay).
+using WalkPatternInfo = behaviours::WalkPatternInfo;
 // nullopt when robot 0 has no controller or its WalkingJointRequest comes from elsewhere.
 std::optional<WalkPatternInfo> walk_pattern_info(SimSession& session);
 
@@ -74,13 +66,12 @@ class WalkFrameObserver {
   struct Previous {
     double t, x, pitch, roll;
   };
-  using AnyPattern = std::variant<walking::StretchedKneePattern, walking::ConventionalPattern>;
   void joints(WalkFrame& f) const;
   void pattern_columns(WalkFrame& f, double t);
 
   Runtime* rt_ = nullptr;
   std::optional<WalkPatternInfo> info_;
-  std::optional<AnyPattern> pattern_;
+  std::optional<behaviours::WalkPatternReplay> pattern_;
   bool has_torso_state_ = false, has_walking_request_ = false;
   int lfoot_ = -1, rfoot_ = -1;
   std::optional<double> first_time_;
