@@ -31,7 +31,7 @@ const std::vector<Subcommand>& subcommands() {
        balance_main},
       {"push-sweep",
        "push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step --directions "
-       "0,180 [--duration s] [--csv f] [--json]: Ch. 7 push experiments",
+       "0,180 [--duration s] [--jobs N] [--csv f] [--json]: Ch. 7 push experiments",
        push_sweep_main},
       {"run",
        "run <scene> --seconds S [--seed N] [--physics a=v,b=w] [--report out.json] [--log file] "
