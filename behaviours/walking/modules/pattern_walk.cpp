@@ -8,8 +8,10 @@
 
 #include "behaviours/stand/stand.hpp"
 #include "behaviours/walking/modules/request_walk.hpp"
+#include "behaviours/walking/modules/walk_odometry.hpp"
 #include "behaviours/walking/modules/walk_parameters.hpp"
 #include "behaviours/walking/modules/walk_plan.hpp"
+#include "behaviours/walking/steps/heading_hold.hpp"
 #include "robot/representations/frame_info.hpp"
 #include "robot/representations/fsr_sensor_data.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
@@ -57,6 +59,7 @@ class PatternPlayer final : public Module {
       : frame_(c.require<FrameInfo>()),
         joints_(c.require<JointSensorData>()),
         fsr_(c.require<FsrSensorData>()),
+        odometry_(c.require<WalkOdometry>()),
         params_(c.parameters<WalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
         plan_(c.provide<WalkPlan>()),
@@ -74,7 +77,7 @@ class PatternPlayer final : public Module {
     const double t = pattern_time(frame_.time, *first_time_, built_from_.start_delay);
     const double t_clamped = std::clamp(t, 0.0, pattern_->duration());
     const walking::PatternSample sample = pattern_->sample(t_clamped);
-    request_ = walking_request(walking::leg_joints(sample));
+    request_ = walking_request(legs(sample, t_clamped));
     plan_ = walking::walk_plan(sample, pattern_->footsteps(), t_clamped);
     if (request_.ik_beyond_limits != 0) ++beyond_limit_frames_;
     request_.ik_beyond_limit_frames = beyond_limit_frames_;
@@ -100,6 +103,14 @@ class PatternPlayer final : public Module {
                  "walk starts or after reset (RequestWalk changes speed while walking)");
   }
 
+  // The pattern's legs, straight in the plan or turned back by the heading hold.
+  walking::LegJoints legs(const walking::PatternSample& sample, double t) {
+    if (!(built_from_.heading_gain > 0.0)) return walking::leg_joints(sample);
+    const walking::HeadingHoldSettings settings{
+        built_from_.heading_gain, built_from_.heading_per_step, 2.0 * pattern_->parameters().T_s()};
+    return hold_.joints(sample, t, odometry_.yaw, settings).legs;
+  }
+
   // The planned ZMP (Eq. 3.16) beside the measured CoP, both in the pattern's world frame; the
   // CoP is placed from the planned waist (an upright torso), so the gap also shows the lean.
   void show_zmp(const walking::PatternSample& s) const {
@@ -115,6 +126,7 @@ class PatternPlayer final : public Module {
   const FrameInfo& frame_;
   const JointSensorData& joints_;
   const FsrSensorData& fsr_;
+  const WalkOdometry& odometry_;
   const WalkParameters& params_;
   WalkingJointRequest& request_;
   WalkPlan& plan_;
@@ -122,6 +134,7 @@ class PatternPlayer final : public Module {
   DebugRequest refusal_;
   std::string name_;
   std::optional<Pattern> pattern_;
+  walking::HeadingHold hold_;
   WalkParameters built_from_;
   std::optional<WalkParameters> refused_;
   std::optional<double> first_time_;
@@ -135,6 +148,7 @@ void register_walking_modules(ModuleRegistry& registry) {
   registry.add<PatternPlayer<walking::StretchedKneePattern>>("PatternWalk");
   registry.add<PatternPlayer<walking::ConventionalPattern>>("ConventionalWalk");
   register_request_walk_modules(registry);
+  register_walk_odometry_modules(registry);
 }
 
 }  // namespace stride::behaviours

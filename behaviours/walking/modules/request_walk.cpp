@@ -7,13 +7,13 @@
 #include <string>
 
 #include "behaviours/walking/modules/pattern_walk.hpp"
+#include "behaviours/walking/modules/walk_odometry.hpp"
 #include "behaviours/walking/modules/walk_plan.hpp"
 #include "behaviours/walking/modules/walk_request.hpp"
 #include "behaviours/walking/steps/pose_target.hpp"
 #include "behaviours/walking/steps/walk_joints.hpp"
 #include "robot/core/error.hpp"
 #include "robot/representations/frame_info.hpp"
-#include "robot/representations/inertial_sensor_data.hpp"
 #include "robot/representations/joint_sensor_data.hpp"
 
 namespace stride::behaviours {
@@ -73,7 +73,7 @@ class RequestWalk final : public Module {
   explicit RequestWalk(ModuleContext& c)
       : frame_(c.require<FrameInfo>()),
         joints_(c.require<JointSensorData>()),
-        inertial_(c.require<InertialSensorData>()),
+        odometry_(c.require<WalkOdometry>()),
         wanted_(c.require<WalkRequest>()),
         params_(c.parameters<RequestWalkParameters>()),
         request_(c.provide<WalkingJointRequest>()),
@@ -87,8 +87,6 @@ class RequestWalk final : public Module {
       start_pose_ = joints_.position;
     }
     const double elapsed = frame_.time - *first_time_;
-    if (last_time_) measured_yaw_ += inertial_.gyro.z() * (frame_.time - *last_time_);
-    last_time_ = frame_.time;
     adopt_limits();
     double t = frame_.time - walk_start_;
     if (!walk_ || walk_->planned_steps() == 0 || walk_->ended(t)) {
@@ -97,7 +95,7 @@ class RequestWalk final : public Module {
       t = 0.0;
     }
     const bool walk = asked(t) && elapsed >= params_.start_delay;
-    walk_->advance(t, walk, asked_, turn_correction(t));
+    walk_->advance(t, walk, asked_, correction(t));
     const walking::WalkSample s = walk_->sample(t);
     const walking::LegJoints legs = walking::leg_joints(s).legs;
     request_ = walking_request(legs);
@@ -124,11 +122,18 @@ class RequestWalk final : public Module {
     return wanted_.mode == WalkMode::walk;
   }
 
-  // The heading loop's turn rate: the reference path's yaw against the gyro's.
-  double turn_correction(double t) const {
-    const double error = walking::wrap_angle(walk_->sample(t).reference.yaw - measured_yaw_);
-    const double c = params_.heading_gain * error;
-    return std::clamp(c, -params_.max_turn, params_.max_turn);
+  // The heading and place loops: the reference path's yaw against the measured one, and the
+  // torso's place on it (the plan's sway carried over) against the measured, in its axes.
+  walking::StepVelocity correction(double t) const {
+    const walking::WalkSample s = walk_->sample(t);
+    const walking::Pose2& r = s.reference;
+    const double turn = params_.heading_gain * walking::wrap_angle(r.yaw - odometry_.yaw);
+    const Eigen::Vector2d sway =
+        walking::rotated(r.yaw - s.frame.yaw, s.waist.x() - s.frame.x, s.waist.y() - s.frame.y);
+    const Eigen::Vector2d behind =
+        walking::rotated(-r.yaw, r.x + sway.x() - odometry_.x, r.y + sway.y() - odometry_.y);
+    return {params_.place_gain * behind.x(), params_.place_gain * behind.y(),
+            std::clamp(turn, -params_.max_turn, params_.max_turn)};
   }
 
   // A fresh walk standing where the last one ended, with the parameters as they are now.
@@ -178,7 +183,7 @@ class RequestWalk final : public Module {
     w.steps = steps_before_ + planned_;
     w.odometry = {s.reference.x, s.reference.y, s.reference.yaw};
     w.plan = {s.frame.x, s.frame.y, s.frame.yaw};
-    w.measured_yaw = measured_yaw_;
+    w.measured_yaw = odometry_.yaw;
     w.ik_beyond_limit_frames = beyond_limit_frames_;
     w.shortened_steps = shortened_before_ + walk_->shortened();
     w.parameters_pending = !same_pattern_fields(params_, built_from_);
@@ -192,7 +197,7 @@ class RequestWalk final : public Module {
 
   const FrameInfo& frame_;
   const JointSensorData& joints_;
-  const InertialSensorData& inertial_;
+  const WalkOdometry& odometry_;
   const WalkRequest& wanted_;
   const RequestWalkParameters& params_;
   WalkingJointRequest& request_;
@@ -203,8 +208,7 @@ class RequestWalk final : public Module {
   RequestWalkParameters built_from_;
   walking::StepLimits limits_;
   walking::StepVelocity asked_;
-  std::optional<double> first_time_, last_time_;
-  double measured_yaw_ = 0.0;
+  std::optional<double> first_time_;
   double walk_start_ = 0.0;
   std::array<double, hal::kNumJoints> start_pose_{};
   std::int64_t beyond_limit_frames_ = 0, steps_before_ = 0, planned_ = 0, shortened_before_ = 0;

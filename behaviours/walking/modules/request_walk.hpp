@@ -40,9 +40,12 @@ struct RequestWalkParameters {
   // Share of its swing within which a foot steps sideways and turns
   // (walking/steps/online_walk.hpp).
   double early_share = walking::OnlineWalk::kEarlyShare;
-  // Heading loop: turn rate added (rad/s per rad) to steps planned while the torso's yaw, from
-  // the gyro, lags the granted requests' (feet turn on the floor); at most max_turn more.
+  // Heading loop: turn rate added (rad/s per rad) to steps planned while the torso's measured
+  // yaw (WalkOdometry) lags the granted requests' (feet turn on the floor); at most max_turn more.
   double heading_gain = 0.0;
+  // Place loop: forward and sideways speed added (m/s per m) to steps planned while the torso's
+  // measured place (WalkOdometry) is behind the granted requests' path; within the limits.
+  double place_gain = 0.0;
   double start_delay = 1.0;         // s standing before the first step may start
   double interpolation_time = 1.0;  // s from the measured pose to the standing pose
 
@@ -62,6 +65,7 @@ struct RequestWalkParameters {
         field("turn_per_step", &P::turn_per_step, "rad/s", Range{0.001, 5}),
         field("early_share", &P::early_share, "", Range{0.1, 1}),
         field("heading_gain", &P::heading_gain, "1/s", Range{0, 20}),
+        field("place_gain", &P::place_gain, "1/s", Range{0, 20}),
         field("start_delay", &P::start_delay, "s", Range{0, 3600}),
         field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}));
   }

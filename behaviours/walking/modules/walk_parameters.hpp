@@ -45,21 +45,27 @@ struct WalkParameters {
   int decay_steps = 0;
   double start_delay = 2.0;         // s standing before the pattern starts
   double interpolation_time = 1.0;  // s from the measured pose to the pattern's first pose
+  // Heading hold (walking/steps/heading_hold.hpp): share of the measured heading (WalkOdometry)
+  // each step turns back, at most heading_per_step; 0: the thesis' walk, straight in the plan.
+  double heading_gain = 0.0;
+  double heading_per_step = 0.1;  // rad
 
   static constexpr std::string_view kTypeName = "WalkParameters";
   static constexpr auto fields() {
     using P = WalkParameters;
-    return std::make_tuple(
-        field("preset", &P::preset), field("T_stride", &P::T_stride, "s"),
-        field("tau_dsp", &P::tau_dsp), field("A_l", &P::A_l, "m"), field("z_min", &P::z_min, "m"),
-        field("z_max", &P::z_max, "m"), field("d_0", &P::d_0, "m"),
-        field("H_foot", &P::H_foot, "m"), field("V_min", &P::V_min, "m/s"),
-        field("V_max", &P::V_max, "m/s"), field("z_conventional", &P::z_conventional, "m"),
-        field("steps", &P::steps, "", Range{0, 10000}),
-        field("development_steps", &P::development_steps, "", Range{0, 1000}),
-        field("decay_steps", &P::decay_steps, "", Range{0, 1000}),
-        field("start_delay", &P::start_delay, "s", Range{0, 3600}),
-        field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}));
+    return std::make_tuple(field("preset", &P::preset), field("T_stride", &P::T_stride, "s"),
+                           field("tau_dsp", &P::tau_dsp), field("A_l", &P::A_l, "m"),
+                           field("z_min", &P::z_min, "m"), field("z_max", &P::z_max, "m"),
+                           field("d_0", &P::d_0, "m"), field("H_foot", &P::H_foot, "m"),
+                           field("V_min", &P::V_min, "m/s"), field("V_max", &P::V_max, "m/s"),
+                           field("z_conventional", &P::z_conventional, "m"),
+                           field("steps", &P::steps, "", Range{0, 10000}),
+                           field("development_steps", &P::development_steps, "", Range{0, 1000}),
+                           field("decay_steps", &P::decay_steps, "", Range{0, 1000}),
+                           field("start_delay", &P::start_delay, "s", Range{0, 3600}),
+                           field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}),
+                           field("heading_gain", &P::heading_gain, "", Range{0, 2}),
+                           field("heading_per_step", &P::heading_per_step, "rad", Range{0, 0.3}));
   }
 };
 

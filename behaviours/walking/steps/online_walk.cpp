@@ -48,12 +48,13 @@ OnlineWalk::OnlineWalk(const PatternParameters& p, const StepLimits& limits, con
   if (const std::string e = limits_error(limits); !e.empty()) throw Error(e);
 }
 
-void OnlineWalk::advance(double t, bool walk, const StepVelocity& wanted, double turn_correction) {
+void OnlineWalk::advance(double t, bool walk, const StepVelocity& wanted,
+                         const StepVelocity& correction) {
   if (next_step_ == 0 && !walk) return;  // standing, asked to stand
-  while (!stopping() && decision_time(next_step_) <= t) plan(walk, wanted, turn_correction);
+  while (!stopping() && decision_time(next_step_) <= t) plan(walk, wanted, correction);
 }
 
-void OnlineWalk::plan(bool walk, const StepVelocity& wanted, double turn_correction) {
+void OnlineWalk::plan(bool walk, const StepVelocity& wanted, const StepVelocity& correction) {
   const int k = next_step_;
   wanted_in_range_ = walk ? within_range(wanted, limits_) : StepVelocity{};
   const StepVelocity granted_before = k == 0 ? StepVelocity{} : reference_.back().to();
@@ -67,7 +68,14 @@ void OnlineWalk::plan(bool walk, const StepVelocity& wanted, double turn_correct
     granted_ = next_step_velocity(granted_before, wanted_in_range_, limits_);
   }
   StepVelocity planned = granted_;
-  if (std::isfinite(turn_correction)) planned.turn += turn_correction;
+  if (kind == StepKind::kMiddle && std::isfinite(correction.forward + correction.sideways)) {
+    const StepVelocity moved = within_range(
+        {granted_.forward + correction.forward, granted_.sideways + correction.sideways, 0.0},
+        limits_);
+    planned.forward = moved.forward;
+    planned.sideways = moved.sideways;
+  }
+  if (std::isfinite(correction.turn)) planned.turn += correction.turn;
   const Pose2 start = k == 0 ? origin_ : step(k - 1).end();
   // A step whose leg IK leaves the joint limits or the legs' reach is planned again with less of
   // its change, then slower than the step before: what the walk grants is what it can do.

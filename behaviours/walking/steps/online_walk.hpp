@@ -61,10 +61,12 @@ class OnlineWalk {
              const Pose2& reference, double early_share = kEarlyShare);
 
   // Plans every step whose lift-off is at or before walk time `t` from the request then:
-  // `walk` false asks to stop. `turn_correction` (rad/s) is added to the granted turn of the steps
-  // planned, beyond the limits' range (a heading loop makes up for the feet turning on the floor)
-  // but not into the reference path. Times only go forward.
-  void advance(double t, bool walk, const StepVelocity& wanted, double turn_correction = 0.0);
+  // `walk` false asks to stop. `correction` is added to the granted velocity of the steps planned
+  // but not to the reference path (a heading and place hold makes up for the feet turning and
+  // sliding on the floor): its turn beyond the limits' range, its forward and sideways speed
+  // within it. Times only go forward.
+  void advance(double t, bool walk, const StepVelocity& wanted,
+               const StepVelocity& correction = {});
   WalkSample sample(double t) const;
   // The planned landings of the swings that end after `t`, soonest first, at most out.size().
   int landings_after(double t, std::span<Landing> out) const;
@@ -83,7 +85,7 @@ class OnlineWalk {
   void set_limits(const StepLimits& limits) { limits_ = limits; }
 
  private:
-  void plan(bool walk, const StepVelocity& wanted, double turn_correction);
+  void plan(bool walk, const StepVelocity& wanted, const StepVelocity& correction);
   double decision_time(int k) const { return k == 0 ? 0.0 : k * T_ - T_s_; }
   const WaistStep& step(int k) const;
   bool within_reach(int k) const;  // the leg IK until step k+1 is planned
