@@ -8,8 +8,8 @@
 namespace stride::walking {
 
 namespace {
-// Eq. 3.11's cycloid share, here for the frame's turn over a swing (no thesis equation: its walk
-// is straight): the turn starts and ends at rest.
+// The swing foot's cycloid share, here for the frame's turn over a swing (no thesis equation: its
+// walk is straight): the turn starts and ends at rest.
 double cycloid_share(double u) {
   const double psi = 2.0 * std::numbers::pi * std::clamp(u, 0.0, 1.0);
   return (psi - std::sin(psi)) / (2.0 * std::numbers::pi);
