@@ -23,6 +23,33 @@ int sweep_main(Args args, std::ostream& out, std::ostream& err);
 int tune_main(Args args, std::ostream& out, std::ostream& err);
 int view_main(Args args, std::ostream& out, std::ostream& err);
 
+namespace {
+
+constexpr const char* kRunUsage =
+    "run <scene> --seconds S [--seed N] [--physics a=v,b=w] [--report out.json] [--log file] "
+    "[--snapshot f.png] "
+    "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] [--lola <socket> "
+    "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] [--debug "
+    "addr:port [--token-file f] [--log-dir d]] | run <scene> "
+    "--ensemble N [--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] "
+    "[--jobs N]: headless simulation (--lola: that robot is served over a LoLA socket); "
+    "--physics: physics settings over the scene's, e.g. engine=mujoco; --debug: served to "
+    "consoles in real time until --seconds or Ctrl-C, paused until the first console "
+    "connects; --ensemble: N perturbed starts, the walk's spread and fall count";
+
+constexpr const char* kExperimentUsage =
+    "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
+    "push-recovery|landing-control [--seeds N] [--jobs N] [--out dir] [--scenes dir] "
+    "[--sweeps dir] [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] "
+    "[--physics a=v,b=w] [--cases a,b] [--only column=a,b ...] [--through-lola | "
+    "--lola-packets]: the experiments, the sweep "
+    "files "
+    "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
+    "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "
+    "hip or none_fast; --only: runs with these levels, e.g. seed=1,2)";
+
+}  // namespace
+
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"balance",
@@ -33,18 +60,7 @@ const std::vector<Subcommand>& subcommands() {
        "push-sweep --scene S --strategy ankle|hip|combined|lqr --impulses a:b:step --directions "
        "0,180 [--duration s] [--jobs N] [--csv f] [--json]: Ch. 7 push experiments",
        push_sweep_main},
-      {"run",
-       "run <scene> --seconds S [--seed N] [--physics a=v,b=w] [--report out.json] [--log file] "
-       "[--snapshot f.png] "
-       "[--video dir] [--view follow|front|side|top|<camera>] [--fps N] [--lola <socket> "
-       "[--robot name] [--realtime] [--lola-wait S] | --lola-packets [--robot name]] [--debug "
-       "addr:port [--token-file f] [--log-dir d]] | run <scene> "
-       "--ensemble N [--seconds S] [--seed N] [--heading-spread rad] [--position-spread m] "
-       "[--jobs N]: headless simulation (--lola: that robot is served over a LoLA socket); "
-       "--physics: physics settings over the scene's, e.g. engine=mujoco; --debug: served to "
-       "consoles in real time until --seconds or Ctrl-C, paused until the first console "
-       "connects; --ensemble: N perturbed starts, the walk's spread and fall count",
-       run_main},
+      {"run", kRunUsage, run_main},
       {"robot", kRobotUsage, robot_main},
       {"lola", kLolaUsage, lola_main},
       {"converge",
@@ -91,17 +107,7 @@ const std::vector<Subcommand>& subcommands() {
        "[--token-file f] [--seconds S]: the live view in a browser (3D scene, plots, data, "
        "console); prints its URL first (--listen port 0: any free port)",
        view_main},
-      {"experiment",
-       "experiment posture|knee-energy|kalman|fastest|arm-swing|gains|push|position-push|"
-       "push-recovery|landing-control [--seeds N] [--jobs N] [--out dir] [--scenes dir] "
-       "[--sweeps dir] [--resume] [--quiet] [--no-plots] [--set Module.field=value ...] "
-       "[--physics a=v,b=w] [--cases a,b] [--only column=a,b ...] [--through-lola | "
-       "--lola-packets]: the experiments, the sweep "
-       "files "
-       "scenes/experiments/<name>.sweep.xml (--jobs: walks at once, default all hardware "
-       "threads; --set: a module parameter in every walk; --cases: posture cases to run, e.g. "
-       "hip or none_fast; --only: runs with these levels, e.g. seed=1,2)",
-       experiment_main},
+      {"experiment", kExperimentUsage, experiment_main},
   };
   return table;
 }

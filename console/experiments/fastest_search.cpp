@@ -32,6 +32,22 @@ double number(const std::string& text) {
   return text.empty() ? 0.0 : std::stod(text);
 }
 
+// One step of the search: the runs of one floor, target and setting, added to the one output.
+sweep::SweepOptions step_options(const sweep::SweepRequest& request, const std::string& floor,
+                                 const std::string& target, const std::string& setting,
+                                 bool first_step) {
+  sweep::SweepOptions o;
+  o.print_tallies = o.plots = false;
+  o.only = {{"floor", {floor}}, {"target", {target}}, {"setting", {setting}}};
+  o.stop = [] { return sweep::InterruptGuard::interrupted(); };
+  // Every step adds its runs to the one output, so --resume skips the steps already made.
+  o.out_dir = request.options.out_dir;
+  o.resume = !first_step || request.options.resume;
+  o.overwrite = first_step && request.options.overwrite;
+  o.command = request.options.command;
+  return o;
+}
+
 }  // namespace
 
 int run_fastest_search(const sweep::SweepRequest& request, std::ostream& out) {
@@ -56,15 +72,7 @@ int run_fastest_search(const sweep::SweepRequest& request, std::ostream& out) {
     for (const std::string& target : levels_of(sweep, target_c)) {
       bool found = false;
       for (const std::string& setting : levels_of(sweep, setting_c)) {
-        sweep::SweepOptions o;
-        o.print_tallies = o.plots = false;
-        o.only = {{"floor", {floor}}, {"target", {target}}, {"setting", {setting}}};
-        o.stop = [] { return sweep::InterruptGuard::interrupted(); };
-        // Every step adds its runs to the one output, so --resume skips the steps already made.
-        o.out_dir = request.options.out_dir;
-        o.resume = !first_step || request.options.resume;
-        o.overwrite = first_step && request.options.overwrite;
-        o.command = request.options.command;
+        const sweep::SweepOptions o = step_options(request, floor, target, setting, first_step);
         first_step = false;
         std::ostringstream quiet;
         const sweep::SweepResult r = sweep::run_sweep(sweep, tallies, *executor, o, quiet);

@@ -192,8 +192,9 @@ VideoStart parse_video_start(const Words& a) {
   return v;
 }
 
-const std::vector<CommandSpec>& command_table() {
-  static const std::vector<CommandSpec> table = {
+// The commands on the scene, its run and its values, in the order help lists them.
+std::vector<CommandSpec> simulation_commands() {
+  return {
       {"help", "help [pattern]", "list commands (matching pattern)", 0, 1, nullptr},
       {"load", "load <scene.xml>", "load a scene (runs <scene>.con next to it)", 1, 1, nullptr},
       {"reset", "reset", "rebuild the scene from its description", 0, 0, nullptr},
@@ -233,6 +234,12 @@ const std::vector<CommandSpec>& command_table() {
        1, -1, check_log},
       {"report", "report [file]", "run report (JSON with the state hash if a file is given)", 0, 1,
        nullptr},
+  };
+}
+
+// The commands on robots, connections, pictures, checks, scripts and studies.
+std::vector<CommandSpec> robot_and_tool_commands() {
+  return {
       {"push", "push <body> <fx> <fy> <fz> <seconds>", "apply a force (N) to a link", 5, 5,
        check_push},
       {"robot", "robot [<name>|<host:port>|?]",
@@ -277,6 +284,14 @@ const std::vector<CommandSpec>& command_table() {
       {"echo", "echo <text>", "print text", 0, -1, nullptr},
       {"quit", "quit", "leave the console", 0, 0, nullptr},
   };
+}
+
+const std::vector<CommandSpec>& command_table() {
+  static const std::vector<CommandSpec> table = [] {
+    std::vector<CommandSpec> all = simulation_commands();
+    for (CommandSpec& c : robot_and_tool_commands()) all.push_back(std::move(c));
+    return all;
+  }();
   return table;
 }
 

@@ -327,6 +327,33 @@ void Interpreter::refuse_while_running(const std::string& command) const {
     throw Error(command + ": the simulation is running in the background (pause first)");
 }
 
+void Interpreter::run(const std::vector<std::string>& a) {
+  if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));
+  if (!interrupt_) throw Error("run: give the seconds to run in a script");
+  start_background_run();
+  out_ << "running from t=" << target().time_text()
+       << (realtime_ ? " in real time (realtime off: as fast as possible;"
+                     : " as fast as possible (realtime on: at the wall clock's pace;")
+       << " commands apply between frames; pause or Ctrl-C stops)\n";
+}
+
+void Interpreter::set(const std::vector<std::string>& a) {
+  std::string fields;
+  for (std::size_t i = 1; i < a.size(); ++i) fields += (i > 1 ? " " : "") + a[i];
+  target().set(a[0], fields);
+  if (!remote_ && a[0].starts_with("module:")) {
+    const std::string module = a[0].substr(7);
+    note_parameters(module.substr(0, module.find('.')));
+  }
+}
+
+void Interpreter::move_robot(const std::vector<std::string>& a) {
+  simulation("mv").move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"),
+                              parse_number(a[2], "z"),
+                              a.size() > 3 ? parse_number(a[3], "yaw")
+                                           : parse_number(local_.get("robot.torso.yaw"), "yaw"));
+}
+
 void Interpreter::dispatch(const Command& c) {
   const auto& a = c.args;
   const std::string& n = c.name;
@@ -341,16 +368,7 @@ void Interpreter::dispatch(const Command& c) {
   }
   if (n == "restart") return restart();
   if (n == "run" || n == "step" || n == "wait") refuse_while_running(n);
-  if (n == "run") {
-    if (!a.empty()) return void(advance(steps_for(parse_number(a[0], "seconds")), nullptr));
-    if (!interrupt_) throw Error("run: give the seconds to run in a script");
-    start_background_run();
-    out_ << "running from t=" << target().time_text()
-         << (realtime_ ? " in real time (realtime off: as fast as possible;"
-                       : " as fast as possible (realtime on: at the wall clock's pace;")
-         << " commands apply between frames; pause or Ctrl-C stops)\n";
-    return;
-  }
+  if (n == "run") return run(a);
   if (n == "step") {
     simulation(n);
     advance(
@@ -369,16 +387,7 @@ void Interpreter::dispatch(const Command& c) {
     return;
   }
   if (n == "get") return get(a);
-  if (n == "set") {
-    std::string fields;
-    for (std::size_t i = 1; i < a.size(); ++i) fields += (i > 1 ? " " : "") + a[i];
-    target().set(a[0], fields);
-    if (!remote_ && a[0].starts_with("module:")) {
-      const std::string module = a[0].substr(7);
-      note_parameters(module.substr(0, module.find('.')));
-    }
-    return;
-  }
+  if (n == "set") return set(a);
   if (n == "mr") return module_request(a);
   if (n == "dr") return debug_request(a);
   if (n == "watch") return watch(a);
@@ -397,13 +406,7 @@ void Interpreter::dispatch(const Command& c) {
   if (n == "disconnect") return disconnect(a);
   if (n == "serve") return serve(a);
   if (n == "view") return view(a);
-  if (n == "mv") {
-    simulation(n).move_robot(parse_number(a[0], "x"), parse_number(a[1], "y"),
-                             parse_number(a[2], "z"),
-                             a.size() > 3 ? parse_number(a[3], "yaw")
-                                          : parse_number(local_.get("robot.torso.yaw"), "yaw"));
-    return;
-  }
+  if (n == "mv") return move_robot(a);
   if (n == "sn") return simulation(n).sensor_switch(a[0], parse_on_off(a[1], a[0]));
   if (n == "snapshot") {
     simulation(n).snapshot(a[0], a.size() > 1 ? a[1] : "");

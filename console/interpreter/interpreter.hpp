@@ -109,6 +109,9 @@ class Interpreter {
   std::uint64_t steps_for(double seconds) const;
 
   void help(const std::vector<std::string>& a);
+  void run(const std::vector<std::string>& a);
+  void set(const std::vector<std::string>& a);
+  void move_robot(const std::vector<std::string>& a);
   void get(const std::vector<std::string>& a);
   void module_request(const std::vector<std::string>& a);
   void debug_request(const std::vector<std::string>& a);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "console/session/walk_frame.hpp"
 #include "console/sweep/run_keys.hpp"
@@ -53,6 +54,52 @@ void append_trace_row(std::string& csv, const std::vector<int>& keys, const std:
   csv += '\n';
 }
 
+// The first trace whose `where` takes this run (its header written to `csv`) and when it starts.
+std::pair<const Sweep::Compiled::Trace*, std::optional<WindowBound>> run_trace(
+    const SweepSpec& spec, const Sweep::Compiled& c, const std::vector<Cell>& plan_values,
+    const Marks& marks, std::string& csv) {
+  for (std::size_t i = 0; i < c.traces.size(); ++i)
+    if (!c.traces[i].where || c.traces[i].where->truth(plan_values)) {
+      for (std::size_t k = 0; k < spec.record.traces[i].columns.size(); ++k)
+        csv += (k ? "," : "") + spec.record.traces[i].columns[k].first;
+      csv += '\n';
+      return {&c.traces[i], bound_of(spec.record.traces[i].from, marks)};
+    }
+  return {nullptr, std::nullopt};
+}
+
+// Physics step -> the values read there; the run's last step is always a key.
+std::map<std::int64_t, std::vector<std::size_t>> value_reads(const SweepSpec& spec,
+                                                             const Marks& marks, double step) {
+  std::map<std::int64_t, std::vector<std::size_t>> reads;
+  const auto step_of = [&](double t) { return static_cast<std::int64_t>(std::llround(t / step)); };
+  const std::int64_t end_step = step_of(marks.end);
+  for (std::size_t i = 0; i < spec.record.values.size(); ++i) {
+    const std::int64_t at = step_of(marks.absolute(spec.record.values[i].at));
+    if (at < 0 || at > end_step)
+      throw Error("value '" + spec.record.values[i].name + "' is read at " +
+                  number_text(at * step) + " s, outside the run (0 to " + number_text(marks.end) +
+                  " s)");
+    reads[at].push_back(i);
+  }
+  reads[end_step];
+  return reads;
+}
+
+// The run's record columns: values, summaries, then derived columns (which see the plan's).
+std::vector<std::string> record_cells(const Sweep::Compiled& c,
+                                      const std::vector<Cell>& plan_values,
+                                      const std::vector<Cell>& values,
+                                      const std::vector<WindowedStat>& summaries, double period) {
+  std::vector<Cell> row = plan_values;
+  row.insert(row.end(), values.begin(), values.end());
+  for (const WindowedStat& s : summaries) row.push_back(s.result(period));
+  for (const Expression& e : c.derived) row.push_back(e.evaluate(row));
+  std::vector<std::string> cells;
+  for (std::size_t i = plan_values.size(); i < row.size(); ++i) cells.push_back(cell_text(row[i]));
+  return cells;
+}
+
 }  // namespace
 
 std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& c,
@@ -77,18 +124,10 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
   for (const SummarySpec& s : spec.record.summaries)
     summaries.emplace_back(bound_of(s.from, marks), bound_of(s.to, marks), s.to_inclusive,
                            SummaryStat(s.stat, s.threshold));
-  // Traces of this run: which ones, and from when.
   const std::vector<Cell> plan_values = plan_cells(run);
-  const Sweep::Compiled::Trace* trace = nullptr;
-  std::optional<WindowBound> trace_from;
-  for (std::size_t i = 0; i < c.traces.size() && !trace; ++i)
-    if (!c.traces[i].where || c.traces[i].where->truth(plan_values)) {
-      trace = &c.traces[i];
-      trace_from = bound_of(spec.record.traces[i].from, marks);
-      for (std::size_t k = 0; k < spec.record.traces[i].columns.size(); ++k)
-        trace_csv += (k ? "," : "") + spec.record.traces[i].columns[k].first;
-      trace_csv += '\n';
-    }
+  const auto traced = run_trace(spec, c, plan_values, marks, trace_csv);
+  const Sweep::Compiled::Trace* trace = traced.first;
+  const std::optional<WindowBound> trace_from = traced.second;
   // A trace's keys are bound only in the runs it traces (through LoLA a controller's
   // representation cannot be read, and an untraced run need not read it).
   std::vector<bool> needed(c.frame_keys.size());
@@ -116,34 +155,15 @@ std::vector<std::string> execute_run(const Sweep& sweep, const Sweep::Compiled& 
   });
 
   // Run to each time a value is read, then to the end.
-  std::map<std::int64_t, std::vector<std::size_t>> reads;  // physics step -> values read there
-  const auto step_of = [&](double t) { return static_cast<std::int64_t>(std::llround(t / step)); };
-  const std::int64_t end_step = step_of(marks.end);
-  for (std::size_t i = 0; i < spec.record.values.size(); ++i) {
-    const std::int64_t at = step_of(marks.absolute(spec.record.values[i].at));
-    if (at < 0 || at > end_step)
-      throw Error("value '" + spec.record.values[i].name + "' is read at " +
-                  number_text(at * step) + " s, outside the run (0 to " + number_text(marks.end) +
-                  " s)");
-    reads[at].push_back(i);
-  }
-  reads[end_step];
   std::vector<Cell> values(spec.record.values.size());
-  for (const auto& [at, which] : reads) {
+  for (const auto& [at, which] : value_reads(spec, marks, step)) {
     while (static_cast<std::int64_t>(sim.steps()) < at) sim.step();
     for (std::size_t i : which)
       values[i] = read_key(*session, walk ? &*walk : nullptr, spec.record.values[i].key);
   }
 
   world.finish();
-  std::vector<Cell> row = plan_values;
-  row.insert(row.end(), values.begin(), values.end());
-  const double period = sim.robot(0).period();
-  for (const WindowedStat& s : summaries) row.push_back(s.result(period));
-  for (const Expression& e : c.derived) row.push_back(e.evaluate(row));
-  std::vector<std::string> cells;
-  for (std::size_t i = plan_values.size(); i < row.size(); ++i) cells.push_back(cell_text(row[i]));
-  return cells;
+  return record_cells(c, plan_values, values, summaries, sim.robot(0).period());
 }
 
 }  // namespace stride::sweep

@@ -174,19 +174,31 @@ Tallies::Tallies(const Sweep& sweep) : sweep_(sweep) {
 
 Tallies::~Tallies() = default;
 
-std::vector<TallyTable> Tallies::compute(const std::vector<std::vector<std::string>>& rows) const {
-  const std::vector<std::string> header = sweep_.csv_header();
-  const auto& plan_columns = sweep_.plan().columns;
-  std::vector<std::vector<Cell>> cells;  // the rows as values
+namespace {
+
+// The CSV rows as values: plan columns as the plan reads them, the others by their column's kind.
+std::vector<std::vector<Cell>> rows_as_cells(const Sweep& sweep,
+                                             const std::vector<std::vector<std::string>>& rows) {
+  const std::vector<std::string> header = sweep.csv_header();
+  const auto& plan_columns = sweep.plan().columns;
+  std::vector<std::vector<Cell>> cells;
   for (const auto& r : rows) {
     std::vector<Cell> v;
     for (std::size_t i = 0; i < r.size() && i < header.size(); ++i) {
       const bool plan = i >= 1 && i <= plan_columns.size();
       v.push_back(plan ? plan_cells(RunPlan{0, {}, {r[i]}})[0]
-                       : cell_value(r[i], sweep_.column_is_text(header[i])));
+                       : cell_value(r[i], sweep.column_is_text(header[i])));
     }
     cells.push_back(std::move(v));
   }
+  return cells;
+}
+
+}  // namespace
+
+std::vector<TallyTable> Tallies::compute(const std::vector<std::vector<std::string>>& rows) const {
+  const auto& plan_columns = sweep_.plan().columns;
+  const std::vector<std::vector<Cell>> cells = rows_as_cells(sweep_, rows);
   const std::size_t status = plan_columns.size() + 1;
   std::vector<TallyTable> out;
   for (const auto& c : tallies_) {
