@@ -11,9 +11,52 @@
 namespace stride::swing_leg {
 namespace {
 
+// The recorded state at time t: errors, estimate, the Lyapunov function and the torque.
+template <typename Plant>
+TrackingSample sample_at(const Plant& plant, const TrackingOptions& o, double t,
+                         const typename Plant::Vec& q, const typename Plant::Vec& qd,
+                         const JointReference<Plant::kJoints>& r, const typename Plant::Mat& h,
+                         const typename Plant::Params& a_hat) {
+  constexpr int N = Plant::kJoints, P = Plant::kParameters;
+  const typename Plant::Params gamma = o.gamma;
+  const SlidingTerms<N> st = sliding_terms<N>(q, qd, r, o.lambda);
+  TrackingSample s;
+  s.t = t;
+  s.q = q;
+  s.q_desired = r.q;
+  s.a_hat = a_hat;
+  const typename Plant::Params a_err = a_hat - plant.a;
+  s.lyapunov = 0.5 * st.s.dot(h * st.s) +
+               0.5 * a_err.dot(gamma.cwiseInverse().cwiseProduct(a_err));  // Eq. 5.7
+  s.tau = o.controller == Controller::Adaptive
+              ? adaptive_torque<N, P>(Plant::regressor(q, qd, st.qd_r, st.qdd_r), a_hat, st, o.kd)
+              : pd_torque<N>(q, qd, r, o.lambda, o.kd);
+  return s;
+}
+
+// Tracking errors over a run: RMS over all steps and over its last fifth, and the largest.
+template <typename Vec>
+struct ErrorStats {
+  Vec sum_sq = Vec::Zero(), late_sq = Vec::Zero(), worst = Vec::Zero();
+  long late_count = 0;
+  void add(const Vec& err, bool late) {
+    sum_sq += err.cwiseAbs2();
+    if (late) {
+      late_sq += err.cwiseAbs2();
+      ++late_count;
+    }
+    worst = worst.cwiseMax(err.cwiseAbs());
+  }
+  void write(TrackingResult& out, long samples) const {
+    out.rms_error = (sum_sq / static_cast<double>(samples)).cwiseSqrt();
+    out.late_rms_error = (late_sq / static_cast<double>(late_count)).cwiseSqrt();
+    out.max_error = worst;
+  }
+};
+
 template <typename Plant>
 TrackingResult run(const TrackingOptions& o, const ReferenceFunction& ref) {
-  constexpr int N = Plant::kJoints, P = Plant::kParameters;
+  constexpr int N = Plant::kJoints;
   using Vec = typename Plant::Vec;
   using Par = typename Plant::Params;
   const Plant plant;
@@ -26,8 +69,7 @@ TrackingResult run(const TrackingOptions& o, const ReferenceFunction& ref) {
   Eigen::VectorXd rq(N), rqd(N), rqdd(N);
   TrackingResult out;
   out.true_parameters = plant.a;
-  Vec sum_sq = Vec::Zero(), late_sq = Vec::Zero(), worst = Vec::Zero();
-  long late_count = 0;
+  ErrorStats<Vec> errors;
   const auto steps = static_cast<long>(std::llround(o.duration / o.dt));
   const auto record = std::max<long>(1, std::llround(o.record_every / o.dt));
   typename Plant::Mat h;
@@ -37,28 +79,10 @@ TrackingResult run(const TrackingOptions& o, const ReferenceFunction& ref) {
     const double t = k * o.dt;
     ref(t, rq, rqd, rqdd);
     const JointReference<N> r{rq, rqd, rqdd};
-    const Vec err = q - r.q;
-    sum_sq += err.cwiseAbs2();
-    if (5 * k >= 4 * steps) {
-      late_sq += err.cwiseAbs2();
-      ++late_count;
-    }
-    worst = worst.cwiseMax(err.cwiseAbs());
+    errors.add(q - r.q, 5 * k >= 4 * steps);
     plant.dynamics(q, qd, h, bias);
     if (k % record == 0 || k == steps) {
-      const SlidingTerms<N> st = sliding_terms<N>(q, qd, r, o.lambda);
-      TrackingSample s;
-      s.t = t;
-      s.q = q;
-      s.q_desired = r.q;
-      s.a_hat = a_hat;
-      const Par a_err = a_hat - plant.a;
-      s.lyapunov = 0.5 * st.s.dot(h * st.s) +
-                   0.5 * a_err.dot(gamma.cwiseInverse().cwiseProduct(a_err));  // Eq. 5.7
-      s.tau =
-          o.controller == Controller::Adaptive
-              ? adaptive_torque<N, P>(Plant::regressor(q, qd, st.qd_r, st.qdd_r), a_hat, st, o.kd)
-              : pd_torque<N>(q, qd, r, o.lambda, o.kd);
+      TrackingSample s = sample_at(plant, o, t, q, qd, r, h, a_hat);
       out.max_torque = std::max(out.max_torque, s.tau.cwiseAbs().maxCoeff());
       out.samples.push_back(std::move(s));
     }
@@ -101,9 +125,7 @@ TrackingResult run(const TrackingOptions& o, const ReferenceFunction& ref) {
     if (!q.allFinite() || !qd.allFinite() || !a_hat.allFinite())
       throw Error("swing-leg simulation diverged at t = " + std::to_string(t) + " s");
   }
-  out.rms_error = (sum_sq / static_cast<double>(steps + 1)).cwiseSqrt();
-  out.late_rms_error = (late_sq / static_cast<double>(late_count)).cwiseSqrt();
-  out.max_error = worst;
+  errors.write(out, steps + 1);
   out.final_estimate = a_hat;
   return out;
 }

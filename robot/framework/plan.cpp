@@ -19,6 +19,75 @@ bool contains(const std::vector<std::string>& v, const std::string& x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
+// The module that provides `rep`: the configuration's choice, else its only provider.
+std::string provider_for(const std::string& rep, const std::vector<ModuleDeclaration>& modules,
+                         const std::map<std::string, std::string>& chosen,
+                         const std::map<std::string, const ModuleDeclaration*>& by_name,
+                         std::map<std::string, std::vector<std::string>>& required_by) {
+  if (auto it = chosen.find(rep); it != chosen.end()) {
+    auto m = by_name.find(it->second);
+    if (m == by_name.end())
+      throw Error("configuration chooses '" + it->second + "' for representation '" + rep +
+                  "', but no module '" + it->second + "' is registered");
+    if (!contains(m->second->provides, rep))
+      throw Error("configuration chooses '" + it->second + "' for representation '" + rep +
+                  "', but '" + it->second + "' does not provide it");
+    return it->second;
+  } else {
+    std::vector<std::string> candidates;
+    for (const auto& m : modules)
+      if (contains(m.provides, rep)) candidates.push_back(m.name);
+    std::sort(candidates.begin(), candidates.end());
+    if (candidates.empty()) {
+      auto users = required_by[rep];
+      std::sort(users.begin(), users.end());
+      throw Error("no provider for representation '" + rep + "' (required by " +
+                  (users.empty() ? std::string("the runtime") : join(users)) + ")");
+    }
+    if (candidates.size() > 1)
+      throw Error("representation '" + rep + "' has several providers (" + join(candidates) +
+                  "); choose one in the configuration");
+    return candidates.front();
+  }
+}
+
+// Modules left over by the sort lie on a cycle or behind one; names one cycle, provider first.
+[[noreturn]] void throw_cycle(const ModulePlan& plan,
+                              const std::map<std::string, const ModuleDeclaration*>& by_name,
+                              const std::map<std::string, int>& in_degree) {
+  // Walk back from a module left over: every one of them has a predecessor that is left over too.
+  auto left = [&](const std::string& m) {
+    const auto it = in_degree.find(m);
+    return it != in_degree.end() && it->second > 0;
+  };
+  std::string start;
+  for (const auto& [m, d] : in_degree)
+    if (d > 0) {
+      start = m;
+      break;
+    }
+  std::vector<std::string> path;  // modules, each requiring what the next one provides
+  std::vector<std::string> via;   // via[i]: representation path[i+1] provides to path[i]
+  std::map<std::string, std::size_t> seen;
+  std::string m = start;
+  while (!seen.count(m)) {
+    seen[m] = path.size();
+    path.push_back(m);
+    for (const auto& need : by_name.at(m)->requires_) {
+      auto p = plan.provider.find(need);
+      if (p != plan.provider.end() && left(p->second)) {
+        via.push_back(need);
+        m = p->second;
+        break;
+      }
+    }
+  }
+  // The cycle is path[seen[m]..] read backwards: provider first.
+  std::string text = m;
+  for (std::size_t i = path.size(); i-- > seen[m];) text += " -[" + via[i] + "]-> " + path[i];
+  throw Error("dependency cycle: " + text);
+}
+
 }  // namespace
 
 ModulePlan plan_modules(const std::vector<ModuleDeclaration>& modules,
@@ -39,32 +108,7 @@ ModulePlan plan_modules(const std::vector<ModuleDeclaration>& modules,
     const auto rep = pending.front();
     pending.pop_front();
     if (built_in.count(rep) || plan.provider.count(rep)) continue;
-    std::string module;
-    if (auto it = chosen.find(rep); it != chosen.end()) {
-      auto m = by_name.find(it->second);
-      if (m == by_name.end())
-        throw Error("configuration chooses '" + it->second + "' for representation '" + rep +
-                    "', but no module '" + it->second + "' is registered");
-      if (!contains(m->second->provides, rep))
-        throw Error("configuration chooses '" + it->second + "' for representation '" + rep +
-                    "', but '" + it->second + "' does not provide it");
-      module = it->second;
-    } else {
-      std::vector<std::string> candidates;
-      for (const auto& m : modules)
-        if (contains(m.provides, rep)) candidates.push_back(m.name);
-      std::sort(candidates.begin(), candidates.end());
-      if (candidates.empty()) {
-        auto users = required_by[rep];
-        std::sort(users.begin(), users.end());
-        throw Error("no provider for representation '" + rep + "' (required by " +
-                    (users.empty() ? std::string("the runtime") : join(users)) + ")");
-      }
-      if (candidates.size() > 1)
-        throw Error("representation '" + rep + "' has several providers (" + join(candidates) +
-                    "); choose one in the configuration");
-      module = candidates.front();
-    }
+    const std::string module = provider_for(rep, modules, chosen, by_name, required_by);
     plan.provider[rep] = module;
     if (selected.insert(module).second) {
       for (const auto& need : by_name[module]->requires_) {
@@ -102,34 +146,7 @@ ModulePlan plan_modules(const std::vector<ModuleDeclaration>& modules,
   }
   if (plan.order.size() == selected.size()) return plan;
 
-  // Walk back from a module left over: every one of them has a predecessor that is left over too.
-  auto left = [&](const std::string& m) { return in_degree[m] > 0; };
-  std::string start;
-  for (const auto& [m, d] : in_degree)
-    if (d > 0) {
-      start = m;
-      break;
-    }
-  std::vector<std::string> path;  // modules, each requiring what the next one provides
-  std::vector<std::string> via;   // via[i]: representation path[i+1] provides to path[i]
-  std::map<std::string, std::size_t> seen;
-  std::string m = start;
-  while (!seen.count(m)) {
-    seen[m] = path.size();
-    path.push_back(m);
-    for (const auto& need : by_name[m]->requires_) {
-      auto p = plan.provider.find(need);
-      if (p != plan.provider.end() && left(p->second)) {
-        via.push_back(need);
-        m = p->second;
-        break;
-      }
-    }
-  }
-  // The cycle is path[seen[m]..] read backwards: provider first.
-  std::string text = m;
-  for (std::size_t i = path.size(); i-- > seen[m];) text += " -[" + via[i] + "]-> " + path[i];
-  throw Error("dependency cycle: " + text);
+  throw_cycle(plan, by_name, in_degree);
 }
 
 }  // namespace stride

@@ -238,6 +238,9 @@ class Parser {
              const std::optional<Range>& range);
 
  private:
+  std::string quoted_or_word(const std::string& where);
+  void parse_sequence(const TypeDesc& d, Value& v, const std::string& where,
+                      const std::optional<Range>& range);
   // "[LAnklePitch=0.1, RAnklePitch=0.1]" after the '[': sets the named elements, keeps the rest.
   // Returns false, reading nothing, if the first element has no name.
   bool parse_named_elements(const TypeDesc& d, Value::List& items, const std::string& where,
@@ -272,6 +275,45 @@ class Parser {
   std::size_t pos_ = 0;
 };
 
+// A string value: "quoted" (with \\ escapes, \\n a newline) or one word.
+std::string Parser::quoted_or_word(const std::string& where) {
+  skip_space();
+  if (pos_ >= s_.size() || s_[pos_] != '"') return std::string(word());
+  std::string out;
+  for (++pos_; pos_ < s_.size() && s_[pos_] != '"'; ++pos_) {
+    if (s_[pos_] == '\\' && pos_ + 1 < s_.size()) {
+      ++pos_;
+      out += s_[pos_] == 'n' ? '\n' : s_[pos_];
+    } else {
+      out += s_[pos_];
+    }
+  }
+  if (pos_ >= s_.size()) fail(where, "a closing '\"'");
+  ++pos_;
+  return out;
+}
+
+// `[a b c]` for an array or list, or named elements (`[LAnklePitch=0.1 ...]`).
+void Parser::parse_sequence(const TypeDesc& d, Value& v, const std::string& where,
+                            const std::optional<Range>& range) {
+  if (!accept('[')) fail(where, "'['");
+  auto& items = std::get<Value::List>(v.data);
+  if (parse_named_elements(d, items, where, range)) return;
+  std::size_t n = 0;
+  for (;; ++n) {
+    skip_space();
+    if (accept(']')) break;
+    if (d.kind == Kind::Array && n >= d.length)
+      fail(where, "']' after " + std::to_string(d.length) + " elements");
+    if (d.kind == Kind::List && n >= items.size()) items.push_back(default_value(*d.element));
+    parse(*d.element, items[n], where + "[" + std::to_string(n) + "]", range);
+  }
+  if (d.kind == Kind::Array && n != d.length)
+    throw InputError(where + ": expected " + std::to_string(d.length) + " elements, got " +
+                     std::to_string(n));
+  items.resize(n);
+}
+
 void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
                    const std::optional<Range>& range) {
   switch (d.kind) {
@@ -300,26 +342,9 @@ void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
       v.data = x;
       return;
     }
-    case Kind::String: {
-      skip_space();
-      if (pos_ < s_.size() && s_[pos_] == '"') {
-        std::string out;
-        for (++pos_; pos_ < s_.size() && s_[pos_] != '"'; ++pos_) {
-          if (s_[pos_] == '\\' && pos_ + 1 < s_.size()) {
-            ++pos_;
-            out += s_[pos_] == 'n' ? '\n' : s_[pos_];
-          } else {
-            out += s_[pos_];
-          }
-        }
-        if (pos_ >= s_.size()) fail(where, "a closing '\"'");
-        ++pos_;
-        v.data = std::move(out);
-      } else {
-        v.data = std::string(word());
-      }
+    case Kind::String:
+      v.data = quoted_or_word(where);
       return;
-    }
     case Kind::Enum: {
       const auto w = word();
       for (std::size_t i = 0; i < d.enumerators.size(); ++i)
@@ -329,25 +354,8 @@ void Parser::parse(const TypeDesc& d, Value& v, const std::string& where,
       fail_at(where, w, "one of " + names);
     }
     case Kind::Array:
-    case Kind::List: {
-      if (!accept('[')) fail(where, "'['");
-      auto& items = std::get<Value::List>(v.data);
-      if (parse_named_elements(d, items, where, range)) return;
-      std::size_t n = 0;
-      for (;; ++n) {
-        skip_space();
-        if (accept(']')) break;
-        if (d.kind == Kind::Array && n >= d.length)
-          fail(where, "']' after " + std::to_string(d.length) + " elements");
-        if (d.kind == Kind::List && n >= items.size()) items.push_back(default_value(*d.element));
-        parse(*d.element, items[n], where + "[" + std::to_string(n) + "]", range);
-      }
-      if (d.kind == Kind::Array && n != d.length)
-        throw InputError(where + ": expected " + std::to_string(d.length) + " elements, got " +
-                         std::to_string(n));
-      items.resize(n);
-      return;
-    }
+    case Kind::List:
+      return parse_sequence(d, v, where, range);
     case Kind::Struct: {
       if (!accept('{')) fail(where, "'{'");
       while (!accept('}')) {

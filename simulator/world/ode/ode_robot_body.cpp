@@ -46,6 +46,46 @@ Eigen::Isometry3d to_isometry(const dReal* pos, const dReal* rot) {
   return t;
 }
 
+namespace {
+
+// One URDF joint as an ODE joint between `child` and `parent` at its zero-pose `frame`;
+// `stops` says whether its limits became hinge stops.
+dJointID make_joint(dWorldID world, const model::Joint& jt, dBodyID child, dBodyID parent,
+                    const Eigen::Isometry3d& frame, bool& stops) {
+  const Eigen::Vector3d axis = frame.linear() * jt.axis;
+  const Eigen::Vector3d anchor = frame.translation();
+  dJointID id = nullptr;
+  switch (jt.type) {
+    case model::JointType::Revolute:
+    case model::JointType::Continuous:
+      id = dJointCreateHinge(world, nullptr);
+      dJointAttach(id, child, parent);
+      dJointSetHingeAnchor(id, anchor.x(), anchor.y(), anchor.z());
+      dJointSetHingeAxis(id, axis.x(), axis.y(), axis.z());
+      if (jt.type == model::JointType::Revolute) {
+        dJointSetHingeParam(id, dParamLoStop, jt.lower);
+        dJointSetHingeParam(id, dParamHiStop, jt.upper);
+        stops = true;
+      }
+      break;
+    case model::JointType::Prismatic:
+      id = dJointCreateSlider(world, nullptr);
+      dJointAttach(id, child, parent);
+      dJointSetSliderAxis(id, axis.x(), axis.y(), axis.z());
+      dJointSetSliderParam(id, dParamLoStop, jt.lower);
+      dJointSetSliderParam(id, dParamHiStop, jt.upper);
+      break;
+    case model::JointType::Fixed:
+      id = dJointCreateFixed(world, nullptr);
+      dJointAttach(id, child, parent);
+      dJointSetFixed(id);
+      break;
+  }
+  return id;
+}
+
+}  // namespace
+
 OdeRobotBody::OdeRobotBody(OdeWorld& world, const model::RobotModel& model, int robot_index,
                            const Eigen::Isometry3d& root_pose, const model::JointVector& q)
     : RobotBody(model), world_(world.world()) {
@@ -93,35 +133,10 @@ OdeRobotBody::OdeRobotBody(OdeWorld& world, const model::RobotModel& model, int 
   for (int j = 0; j < nj; ++j) {
     const model::Joint& jt = model.joints[j];
     const Eigen::Isometry3d frame = root_pose * zero_poses[jt.child_link];
-    const Eigen::Vector3d axis = frame.linear() * jt.axis;
-    const Eigen::Vector3d anchor = frame.translation();
-    dJointID id = nullptr;
-    switch (jt.type) {
-      case model::JointType::Revolute:
-      case model::JointType::Continuous:
-        id = dJointCreateHinge(world.world(), nullptr);
-        dJointAttach(id, bodies_[jt.child_link], bodies_[jt.parent_link]);
-        dJointSetHingeAnchor(id, anchor.x(), anchor.y(), anchor.z());
-        dJointSetHingeAxis(id, axis.x(), axis.y(), axis.z());
-        if (jt.type == model::JointType::Revolute) {
-          dJointSetHingeParam(id, dParamLoStop, jt.lower);
-          dJointSetHingeParam(id, dParamHiStop, jt.upper);
-          stops_set_[j] = 1;
-        }
-        break;
-      case model::JointType::Prismatic:
-        id = dJointCreateSlider(world.world(), nullptr);
-        dJointAttach(id, bodies_[jt.child_link], bodies_[jt.parent_link]);
-        dJointSetSliderAxis(id, axis.x(), axis.y(), axis.z());
-        dJointSetSliderParam(id, dParamLoStop, jt.lower);
-        dJointSetSliderParam(id, dParamHiStop, jt.upper);
-        break;
-      case model::JointType::Fixed:
-        id = dJointCreateFixed(world.world(), nullptr);
-        dJointAttach(id, bodies_[jt.child_link], bodies_[jt.parent_link]);
-        dJointSetFixed(id);
-        break;
-    }
+    bool stops = false;
+    dJointID id = make_joint(world.world(), jt, bodies_[jt.child_link], bodies_[jt.parent_link],
+                             frame, stops);
+    if (stops) stops_set_[j] = 1;
     dJointSetFeedback(id, &feedback_[j]);
     joints_[j] = id;
   }
