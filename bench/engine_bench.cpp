@@ -8,6 +8,7 @@
 // `--setting=<label>=<attr=v,...>[@walk scene]` (repeatable) times further settings beside them.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -25,13 +26,17 @@ struct Setting {
 };
 
 // The shipped settings under the scene's contact law (ODE's is what the walking scenes state;
-// the standing scene states none and runs ODE's default, iterative 10), then the old study
+// the standing scene states none and runs ODE's default, iterative 10), the faster ones measured
+// against them (scenes/experiments/README.md, "fast converged settings"), then the old study
 // settings and the artefact every walking scene stated before (ODE iterative 20), without the law.
 std::vector<Setting> default_settings() {
   return {
       {"ode exact 1 ms, law (shipped)", "engine=ode,solver=exact"},
       {"mujoco newton 1 ms, law", "engine=mujoco,solver=exact"},
       {"mujoco newton 0.5 ms, law", "engine=mujoco,solver=exact,step=0.5ms"},
+      {"mujoco newton 1.25 ms, law", "engine=mujoco,solver=exact,step=1.25ms"},
+      {"ode exact 2 ms, law (not converged)", "engine=ode,solver=exact,step=2ms"},
+      {"ode iterative 50, law (not converged)", "engine=ode,solver=iterative,iterations=50"},
       {"ode iterative 10 (standing scenes' default)", "engine=ode,solver=iterative,iterations=10"},
       {"ode exact 1 ms (old study setting)", "engine=ode,solver=exact", false},
       {"mujoco newton 0.5 ms (old study setting)", "engine=mujoco,solver=exact,step=0.5ms", false},
@@ -75,9 +80,12 @@ void run(benchmark::State& state, const std::string& scene, double settle, const
 }
 
 // The standing NAO from 0.5 s. The hip walk from 2.5 s on: the walk has started (2 s of standing
-// first) and runs for the whole timing, 10 000 steps (a fixed count: Google Benchmark refuses
-// MinTime beside Iterations, and a count chosen by time would run past the 15 s walk's end).
+// first) and runs for the whole timing, 10 s of simulated time whatever the step (a fixed count:
+// Google Benchmark refuses MinTime beside Iterations, and a count chosen by time would run past
+// the 15 s walk's end).
 void register_setting(const Setting& s, bool with_boxes) {
+  const double step = load(s.walk, s, false).physics.step;
+  const auto steps = static_cast<benchmark::IterationCount>(std::llround(10.0 / step));
   benchmark::RegisterBenchmark(("BM_NaoStanding/" + s.label).c_str(), [s](benchmark::State& st) {
     run(st, "scenes/nao_stand.xml", 0.5, s, false);
   })->MinTime(2.0);
@@ -86,7 +94,7 @@ void register_setting(const Setting& s, bool with_boxes) {
     benchmark::RegisterBenchmark(
         ("BM_HipWalk/" + s.label + (boxes ? "/floor:boxes" : "")).c_str(),
         [s, boxes](benchmark::State& st) { run(st, s.walk, 2.5, s, boxes); })
-        ->Iterations(10000);
+        ->Iterations(steps);
   }
 }
 
