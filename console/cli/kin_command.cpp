@@ -14,12 +14,10 @@
 #include "robot/core/json_writer.hpp"
 #include "robot/core/number_text.hpp"
 #include "robot/core/quote.hpp"
-#include "robot/model/kinematics/dls_ik.hpp"
+#include "robot/model/kinematics/chain_ik.hpp"
 #include "robot/model/kinematics/nao_fk.hpp"
 #include "robot/model/kinematics/nao_joint_map.hpp"
-#include "robot/model/kinematics/nao_leg_ik.hpp"
 #include "robot/model/urdf_loader.hpp"
-#include "robot/nao/nao_dimensions.hpp"
 
 namespace stride::cli {
 namespace {
@@ -117,29 +115,10 @@ int ik(Args args, std::ostream& out) {
   const bool json = a.flag("--json");
   a.finish();
   const auto ids = chain_joints(c);
-  std::vector<double> q(ids.size());
-  bool reachable = true;
-  double residual = 0;
-  if (c == NaoChain::LLeg || c == NaoChain::RLeg) {
-    const LegIkResult r = leg_ik(c == NaoChain::LLeg ? Side::Left : Side::Right, target);
-    std::copy(r.q.begin(), r.q.end(), q.begin());
-    reachable = r.reachable;
-    residual = r.position_error;
-  } else {  // arms and head: damped least squares on the URDF, end effector as chain_fk's
-    const RobotModel m = load_urdf(urdf);
-    const NaoJointMap map = make_nao_joint_map(m);
-    const char* link = c == NaoChain::Head ? "Head" : c == NaoChain::LArm ? "LHand" : "RHand";
-    const Eigen::Vector3d point =
-        c == NaoChain::Head ? Eigen::Vector3d::Zero() : Eigen::Vector3d(nao::kHandOffsetX, 0, 0);
-    JointVector jq = zero_joints(m);
-    DlsIkWorkspace work;
-    DlsIkOptions opt;
-    opt.damping = 1e-2;
-    const DlsIkResult r = dls_ik(m, m.link_index(link), target, jq, work, opt, point);
-    for (size_t i = 0; i < ids.size(); ++i) q[i] = jq[map.model_index[hal::index(ids[i])]];
-    reachable = r.converged;
-    residual = r.error;
-  }
+  const ChainIkResult r = chain_ik(c, target, urdf);
+  const std::vector<double>& q = r.q;
+  const bool reachable = r.reachable;
+  const double residual = r.residual;
   if (json) {
     JsonWriter j(JsonWriter::Style::Spaced);
     j.begin_object().field("reachable", reachable).field("residual", residual);
