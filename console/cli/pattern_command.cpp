@@ -11,7 +11,7 @@
 #include "behaviours/walking/pattern/pattern_joints.hpp"
 #include "behaviours/walking/pattern/pattern_parameter_list.hpp"
 #include "behaviours/walking/pattern/pattern_plausibility.hpp"
-#include "behaviours/walking/pattern/support_polygon.hpp"
+#include "behaviours/walking/pattern/pattern_study.hpp"
 #include "behaviours/walking/pattern/walking_pattern.hpp"
 #include "console/cli/arguments.hpp"
 #include "console/cli/exit_codes.hpp"
@@ -75,11 +75,7 @@ PatternOptions parse_options(Args args) {
   return o;
 }
 
-// One sampled instant with its leg joints.
-struct Frame {
-  PatternSample s;
-  walking::LegJoints q;
-};
+using Frame = walking::PatternFrame;  // one sampled instant with its leg joints
 
 plot::Table walk_table(const std::vector<Frame>& walk) {
   plot::Table t{{"time", "waist_x", "waist_y", "waist_z", "left_x", "left_y", "left_z", "right_x",
@@ -208,11 +204,7 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
     o = parse_options(args);
     if (!o.csv.empty()) console::check_output_file("--csv", o.csv);
     if (!o.plots.empty()) console::check_output_dir("--plots", o.plots);
-    const std::vector<PatternSample> samples =
-        o.conventional ? walking::sample_walk(walking::ConventionalPattern(o.params), o.dt)
-                       : walking::sample_walk(walking::StretchedKneePattern(o.params), o.dt);
-    walk.reserve(samples.size());
-    for (const PatternSample& s : samples) walk.push_back({s, walking::leg_joints(s)});
+    walk = walking::sample_pattern(o.params, o.conventional, o.dt);
   } catch (const Error& e) {
     return report_error(UsageError(e.what()), err, "stride pattern: ");
   }
@@ -228,25 +220,17 @@ int pattern_main(Args args, std::ostream& out, std::ostream& err) {
     err << "stride pattern: " << e.what() << "\n";
     return 1;
   }
-  double worst = std::numeric_limits<double>::infinity(), min_knee = worst;
-  int unreachable = 0;
-  for (const Frame& f : walk) {
-    worst = std::min(worst, walking::zmp_margin(f.s));
-    unreachable += f.q.reachable ? 0 : 1;
-    if (f.s.support == walking::SupportPhase::kLeft) min_knee = std::min(min_knee, f.q.left[3]);
-    if (f.s.support == walking::SupportPhase::kRight) min_knee = std::min(min_knee, f.q.right[3]);
-  }
-  const double duration = walk.back().s.t, distance = walk.back().s.waist.x();
+  const walking::PatternSummary r = walking::summarize_pattern(walk);
   out << (o.conventional ? "conventional" : "stretched-knee") << " pattern: " << o.params.steps + 1
-      << " foot steps in " << duration << " s, " << distance << " m, " << distance / duration
-      << " m/s mean, " << distance / (o.params.steps + 1)
-      << " m per step; worst ZMP margin to the support polygon " << worst
-      << " m; smallest support knee " << min_knee << " rad; " << unreachable
+      << " foot steps in " << r.duration << " s, " << r.distance << " m, "
+      << r.distance / r.duration << " m/s mean, " << r.distance / (o.params.steps + 1)
+      << " m per step; worst ZMP margin to the support polygon " << r.worst_zmp_margin
+      << " m; smallest support knee " << r.min_support_knee << " rad; " << r.unreachable
       << " samples out of the legs' reach\n";
   for (const std::string& note : walking::plausibility_notes(o.params))
     out << "note: " << note << "\n";
-  if (unreachable == 0) return 0;
-  err << "stride pattern: " << unreachable
+  if (r.unreachable == 0) return 0;
+  err << "stride pattern: " << r.unreachable
       << " samples put a foot beyond its leg's reach (the IK clamped them)\n";
   return 1;
 }
