@@ -90,7 +90,7 @@ std::string run_report_json(const Simulation& sim, const RunTiming& timing) {
   if (const LolaServeReport* l = timing.lola) {
     j.key("lola").begin_object();
     j.field("socket", l->socket).field("robot", l->robot);
-    j.field("pacing", std::string(l->pacing == LolaPacing::Realtime ? "realtime" : "lockstep"));
+    j.field("pacing", std::string(enum_name(l->pacing)));
     j.field("period", l->period).field("frames", static_cast<long long>(l->frames));
     j.field("exchanged", static_cast<long long>(l->exchanged));
     j.field("missed", static_cast<long long>(l->missed));

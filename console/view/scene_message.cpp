@@ -1,23 +1,12 @@
 #include "console/view/scene_message.hpp"
 
+#include "robot/framework/enum_names.hpp"
 #include "simulator/render/body_side.hpp"
 #include "simulator/world/physics_world.hpp"
 
 namespace stride::view {
 
 namespace {
-
-const char* side_name(render::BodySide side) {
-  switch (side) {
-    case render::BodySide::Left:
-      return "left";
-    case render::BodySide::Right:
-      return "right";
-    case render::BodySide::Centre:
-      break;
-  }
-  return "centre";
-}
 
 Json shape_json(const model::CollisionShape& c) {
   using Kind = model::CollisionShape::Kind;
@@ -57,7 +46,7 @@ Json robot_links_json(const model::RobotModel& model) {
     Json shapes = Json::array();
     for (const auto& c : link.collisions) shapes.push_back(shape_json(c));
     links.push_back({{"name", link.name},
-                     {"side", side_name(render::side_of_link(link.name))},
+                     {"side", std::string(enum_name(render::side_of_link(link.name)))},
                      {"shapes", std::move(shapes)}});
   }
   return links;

@@ -1,12 +1,13 @@
 #include <cstdio>
 #include <string>
 
+#include "robot/framework/enum_names.hpp"
 #include "robot/framework/module.hpp"
 
 namespace stride {
 
 std::string_view debug_switch_name(DebugSwitch s) {
-  return s == DebugSwitch::Off ? "off" : s == DebugSwitch::On ? "on" : "quiet";
+  return enum_name(s);
 }
 
 void DebugRequest::print(std::string_view text) const {

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "robot/framework/reflect.hpp"
 #include "robot/framework/slot.hpp"
 
 namespace stride {
@@ -37,7 +38,12 @@ inline constexpr int kMaxDebugRequests = 256;
 using DebugRequestBits = std::bitset<kMaxDebugRequests>;
 // A debug request off, on, or on without printing (values and stops only).
 enum class DebugSwitch : std::uint8_t { Off, On, Quiet };
-std::string_view debug_switch_name(DebugSwitch s);  // "off", "on", "quiet"
+template <>
+struct EnumNames<DebugSwitch> {
+  static constexpr std::string_view type_name = "DebugSwitch";
+  static constexpr std::array<std::string_view, 3> names{"off", "on", "quiet"};
+};
+std::string_view debug_switch_name(DebugSwitch s);  // its EnumNames: "off", "on", "quiet"
 
 inline constexpr std::size_t kMaxDebugLines = 10000;  // undrained lines beyond this are counted
 

@@ -5,6 +5,7 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/framework/enum_names.hpp"
 #include "robot/runtime/runtime.hpp"
 
 namespace stride {
@@ -35,9 +36,7 @@ std::string debug_value_text(double v) {
 }
 
 std::optional<DebugSwitch> debug_switch_named(std::string_view name) {
-  for (DebugSwitch s : {DebugSwitch::Off, DebugSwitch::On, DebugSwitch::Quiet})
-    if (debug_switch_name(s) == name) return s;
-  return std::nullopt;
+  return enum_from_name<DebugSwitch>(name);
 }
 
 bool is_controller_key(std::string_view key) {

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "robot/core/error.hpp"
+#include "robot/framework/enum_names.hpp"
 #include "robot/hal/lola/lola_protocol.hpp"
 #include "simulator/lola/lola_frames.hpp"
 
@@ -167,10 +168,9 @@ void LolaServer::exchange(SimulatedRobot& robot) {
 
 std::string lola_report_text(const LolaServeReport& r) {
   std::ostringstream o;
-  o << "lola " << r.socket << " (robot " << r.robot << ", "
-    << (r.pacing == LolaPacing::Realtime ? "realtime" : "lockstep") << ", " << r.period * 1e3
-    << " ms): " << r.frames << " frames, " << r.exchanged << " exchanged, " << r.missed
-    << " missed, " << r.bad_packets << " bad packets";
+  o << "lola " << r.socket << " (robot " << r.robot << ", " << enum_name(r.pacing) << ", "
+    << r.period * 1e3 << " ms): " << r.frames << " frames, " << r.exchanged << " exchanged, "
+    << r.missed << " missed, " << r.bad_packets << " bad packets";
   if (r.pacing == LolaPacing::Realtime)
     o << ", " << r.late_answers << " late answers, " << r.late_frames << " sent late";
   o << ", " << r.without_client << " without a client, " << r.clients << " client"

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "robot/framework/reflect.hpp"
 #include "robot/hal/lola/packet_stream.hpp"
 #include "robot/hal/unix_socket.hpp"
 #include "simulator/simulated_robot.hpp"
@@ -21,6 +22,16 @@
 namespace stride::sim {
 
 enum class LolaPacing { Lockstep, Realtime };
+
+}  // namespace stride::sim
+
+template <>
+struct stride::EnumNames<stride::sim::LolaPacing> {
+  static constexpr std::string_view type_name = "LolaPacing";
+  static constexpr std::array<std::string_view, 2> names{"lockstep", "realtime"};
+};
+
+namespace stride::sim {
 
 inline constexpr double kLockstepAnswerTimeout = 10.0;  // s
 
