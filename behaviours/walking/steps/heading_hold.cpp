@@ -1,6 +1,7 @@
 #include "behaviours/walking/steps/heading_hold.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "robot/model/kinematics/nao_leg_ik.hpp"
