@@ -53,6 +53,7 @@ SimulatedRobot::SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placem
     if (placement.period > 0) devices_.period = placement.period;  // the scene's choice wins
     for (const MotorOverride& o : placement.motors) apply_motor_override(devices_, o);
     for (const ServoOverride& o : placement.servos) apply_servo_override(devices_, o);
+    if (placement.gyro_bias) devices_.imu.gyro_bias = *placement.gyro_bias;
     if (placement.calibration) {
       MimicJoints mimic;
       for (const auto& jt : model_->joints)

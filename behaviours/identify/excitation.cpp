@@ -27,6 +27,14 @@ double chirp_cycles(double f0, double f1, double duration, double t) {
   return f0 * (std::exp(k * t) - 1) / k;
 }
 
+// The hip roll joints swing outward only (from the posture to 2a away from the other leg), so
+// that the feet never meet.
+double outward(int joint) {
+  if (joint == hal::index(hal::JointId::LHipRoll)) return 1;
+  if (joint == hal::index(hal::JointId::RHipRoll)) return -1;
+  return 0;
+}
+
 // Joint k's frequencies are scaled apart so that no two joints move in step.
 double joint_scale(std::size_t k) {
   return 1.0 + 0.11 * static_cast<double>(k);
@@ -40,7 +48,9 @@ void leg_chirp(const ExcitationParameters& p, double t, double env, JointTargets
     const double f_now = f0 * std::exp(k_rate * t);
     // Peak speed 2 pi f A stays within the bound at every frequency.
     const double a = std::min(p.amplitude, p.max_speed / (2 * kPi * f_now));
-    q[kExcitedLegJoints[k]] += env * a * std::sin(2 * kPi * chirp_cycles(f0, f1, p.duration, t));
+    const int j = kExcitedLegJoints[k];
+    const double wave = std::sin(2 * kPi * chirp_cycles(f0, f1, p.duration, t));
+    q[j] += env * a * (outward(j) != 0 ? outward(j) * (1 + wave) : wave);
   }
 }
 
@@ -48,7 +58,9 @@ void leg_steps(const ExcitationParameters& p, double t, double env, JointTargets
   for (std::size_t k = 0; k < kExcitedLegJoints.size(); ++k) {
     const double cycles = p.f_low * joint_scale(k) * t;
     const double sign = std::fmod(cycles, 1.0) < 0.5 ? 1.0 : -1.0;
-    q[kExcitedLegJoints[k]] += env * p.amplitude * sign;  // limit_rate bounds the edges' speed
+    const int j = kExcitedLegJoints[k];
+    // limit_rate bounds the edges' speed
+    q[j] += env * p.amplitude * (outward(j) != 0 ? outward(j) * (1 + sign) : sign);
   }
 }
 

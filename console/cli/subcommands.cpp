@@ -22,6 +22,8 @@ int lola_main(Args args, std::ostream& out, std::ostream& err);
 int sweep_main(Args args, std::ostream& out, std::ostream& err);
 int tune_main(Args args, std::ostream& out, std::ostream& err);
 int view_main(Args args, std::ostream& out, std::ostream& err);
+int identify_main(Args args, std::ostream& out, std::ostream& err);
+std::string_view identify_summary();
 
 namespace {
 
@@ -102,6 +104,7 @@ const std::vector<Subcommand>& subcommands() {
        "over a tuning file's parameters, each generation one sweep on local workers or MPI "
        "ranks; the best candidate against the thesis' values on the held-out walks only",
        tune_main},
+      {"identify", identify_summary(), identify_main},
       {"view",
        "view <scene> | --connect host:port | --log <file> [--scene S] [--listen addr:port] "
        "[--token-file f] [--seconds S]: the live view in a browser (3D scene, plots, data, "

@@ -255,6 +255,14 @@ CalibrationSpread calibration_spread(const XmlElement& e) {
   return c;
 }
 
+Eigen::Vector3d gyro_bias_override(const XmlElement& e) {
+  e.allow_only({"gyro_bias"});
+  if (e.raw()->FirstChildElement()) e.fail("unexpected child element of <imu>");
+  if (!e.has("gyro_bias")) e.fail("expected gyro_bias=\"x y z\" (e.g. \"-18deg -18deg 0\")");
+  constexpr double kLargest = 10;  // rad/s: beyond any gyro's range
+  return e.vector3_within("gyro_bias", Eigen::Vector3d::Zero(), kLargest, Dimension::Angle);
+}
+
 void apply_servo_override(DeviceDescription& devices, const ServoOverride& override_) {
   const std::string where = "<servo joint=\"" + override_.joint + "\">: ";
   for (ServoSpec& s : devices.servos) {

@@ -118,6 +118,7 @@ struct RobotPlacement {
   std::vector<MotorOverride> motors;             // <motor> changes to the device file, in order
   std::vector<ServoOverride> servos;             // <servo> calibration errors, in order
   std::optional<CalibrationSpread> calibration;  // <calibration>: seeded zero errors
+  std::optional<Eigen::Vector3d> gyro_bias;      // <imu gyro_bias>: rad/s, over the device file's
   bool has_controller = false;
   ControllerConfig controller;
   SensorSwitches sensors;

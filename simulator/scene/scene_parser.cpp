@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -19,6 +20,7 @@
 #include "simulator/scene/contact_law_parser.hpp"
 #include "simulator/scene/include_walk.hpp"
 #include "simulator/scene/mujoco_options.hpp"
+#include "simulator/scene/robot_override_file.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/solver_names.hpp"
 #include "simulator/world/contact_softness.hpp"
@@ -30,7 +32,9 @@ namespace fs = std::filesystem;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
 
-constexpr double kMaxAngle = 1e3;  // rad: |roll|, |pitch|, |yaw| of anything placed
+constexpr double kMaxGyroBias = 10;    // rad/s: beyond any gyro's range
+constexpr int kMaxRobotIncludes = 64;  // robot override files per scene
+constexpr double kMaxAngle = 1e3;      // rad: |roll|, |pitch|, |yaw| of anything placed
 
 class Parser {
  public:
@@ -427,38 +431,57 @@ class Parser {
     };
     for (const XMLElement* c = e.raw()->FirstChildElement(); c; c = c->NextSiblingElement()) {
       XmlElement child(c, e.file());
-      const std::string_view n = child.name();
-      if (n == "joints" || n == "sensors" || n == "controller" || n == "calibration")
-        once(child, std::string(n), "");
-      if ((n == "motor" || n == "servo" || n == "calibration") && r.devices.empty())
-        child.fail("<" + std::string(n) + "> changes the device file, and there is none");
-      if (n == "joints") {
-        // Attributes are joint names; they are checked against the URDF when the world is built.
-        r.joints_line = child.line();
-        for (const tinyxml2::XMLAttribute* a = c->FirstAttribute(); a; a = a->Next())
-          r.joints[a->Name()] = child.number_within(a->Name(), 0, -limits::kMaxJointRange,
-                                                    limits::kMaxJointRange, Dimension::Angle);
-      } else if (n == "sensors") {
-        child.allow_only({"noise", "delay", "quantise"});
-        r.sensors.noise = child.boolean_or("noise", true);
-        r.sensors.delay = child.boolean_or("delay", true);
-        r.sensors.quantise = child.boolean_or("quantise", true);
-      } else if (n == "controller") {
-        r.has_controller = true;
-        r.controller = parse_controller(child);
-      } else if (n == "motor") {
-        r.motors.push_back(motor_override(child));
-        once(child, "motor " + r.motors.back().name, "name '" + r.motors.back().name + "'");
-      } else if (n == "servo") {
-        r.servos.push_back(servo_override(child));
-        once(child, "servo " + r.servos.back().joint, "joint '" + r.servos.back().joint + "'");
-      } else if (n == "calibration") {
-        r.calibration = calibration_spread(child);
-      } else {
-        child.fail(
-            "unknown element in <robot> (expected joints, sensors, controller, motor, servo or "
-            "calibration)");
-      }
+      if (child.name() == "include")
+        robot_include(child, r, once);
+      else
+        robot_child(child, r, once);
+    }
+  }
+
+  using Once = std::function<void(const XmlElement&, const std::string&, const std::string&)>;
+
+  // <include file="robot-id.xml"/> in a <robot> (robot_override_file.hpp).
+  void robot_include(const XmlElement& e, RobotPlacement& r, const Once& once) {
+    if (++robot_includes_ > kMaxRobotIncludes)
+      e.fail("more than " + std::to_string(kMaxRobotIncludes) + " robot includes in one scene");
+    for (const XmlElement& child : robot_override_children(e, override_files_))
+      robot_child(child, r, once);
+  }
+
+  void robot_child(const XmlElement& child, RobotPlacement& r, const Once& once) {
+    const std::string_view n = child.name();
+    if (n == "joints" || n == "sensors" || n == "controller" || n == "calibration" || n == "imu")
+      once(child, std::string(n), "");
+    if ((n == "motor" || n == "servo" || n == "calibration" || n == "imu") && r.devices.empty())
+      child.fail("<" + std::string(n) + "> changes the device file, and there is none");
+    if (n == "joints") {
+      // Attributes are joint names; they are checked against the URDF when the world is built.
+      r.joints_line = child.line();
+      for (const tinyxml2::XMLAttribute* a = child.raw()->FirstAttribute(); a; a = a->Next())
+        r.joints[a->Name()] = child.number_within(a->Name(), 0, -limits::kMaxJointRange,
+                                                  limits::kMaxJointRange, Dimension::Angle);
+    } else if (n == "sensors") {
+      child.allow_only({"noise", "delay", "quantise"});
+      r.sensors.noise = child.boolean_or("noise", true);
+      r.sensors.delay = child.boolean_or("delay", true);
+      r.sensors.quantise = child.boolean_or("quantise", true);
+    } else if (n == "controller") {
+      r.has_controller = true;
+      r.controller = parse_controller(child);
+    } else if (n == "motor") {
+      r.motors.push_back(motor_override(child));
+      once(child, "motor " + r.motors.back().name, "name '" + r.motors.back().name + "'");
+    } else if (n == "servo") {
+      r.servos.push_back(servo_override(child));
+      once(child, "servo " + r.servos.back().joint, "joint '" + r.servos.back().joint + "'");
+    } else if (n == "calibration") {
+      r.calibration = calibration_spread(child);
+    } else if (n == "imu") {
+      r.gyro_bias = gyro_bias_override(child);
+    } else {
+      child.fail(
+          "unknown element in <robot> (expected joints, sensors, controller, motor, servo, "
+          "calibration, imu or include)");
     }
   }
 
@@ -488,6 +511,8 @@ class Parser {
   bool physics_seen_ = false;
   ReplacedAttribute replaced_;
   UnstatedFriction unstated_{true, {}, {}};  // no <ground>: the default ground states none
+  int robot_includes_ = 0;
+  RobotOverrideFiles override_files_;
   IncludeWalk walk_{[this](const XmlElement& e) { scene_root(e); },
                     [this](const XmlElement& e) { element(e); }};
 };

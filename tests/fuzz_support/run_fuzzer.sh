@@ -2,7 +2,7 @@
 # Builds one libFuzzer target (clang, ASan + UBSan in every library it reaches, in build-fuzz) and
 # runs it on its committed corpus:
 #   tests/fuzz_support/run_fuzzer.sh <name> [seconds=600] [libFuzzer flags...]
-# <name>: parser, scene, physics, console_exec, log, sweep, tune, lola, debug (the target is
+# <name>: parser, scene, physics, console_exec, log, sweep, tune, lola, debug, identify (the target is
 # tests/fuzz_<name>/<name>_fuzzer.cpp; tests/CMakeLists.txt makes one per such file).
 # e.g. `... physics 3600 -jobs=2 -workers=2` or `... lola 9000 -runs=1000000`. New inputs go to
 # build-fuzz/<name>_corpus; the committed corpus (tests/fuzz_<name>/corpus) is only read; crashes
@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 root=$(pwd)
-name=${1:?"a target: parser, scene, physics, console_exec, log, sweep, tune, lola or debug"}
+name=${1:?"a target: parser, scene, physics, console_exec, log, sweep, tune, lola, debug or identify"}
 seconds=${2:-600}
 shift $(($# < 2 ? $# : 2))
 case $name in  # the longest input libFuzzer may build, per target
@@ -18,9 +18,9 @@ case $name in  # the longest input libFuzzer may build, per target
   scene | sweep | debug) max_len=4096 ;;
   physics) max_len=16384 ;;
   console_exec | lola) max_len=2048 ;;
-  log) max_len=65536 ;;
+  log | identify) max_len=65536 ;;
   tune) max_len=8192 ;;
-  *) echo "run_fuzzer.sh: unknown fuzz target '$name' (parser, scene, physics, console_exec, log, sweep, tune, lola, debug)" >&2; exit 2 ;;
+  *) echo "run_fuzzer.sh: unknown fuzz target '$name' (parser, scene, physics, console_exec, log, sweep, tune, lola, debug, identify)" >&2; exit 2 ;;
 esac
 folder=fuzz_$name
 [[ $name == console_exec ]] && folder=fuzz_console
