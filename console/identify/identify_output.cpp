@@ -76,7 +76,7 @@ std::string override_text(const IdentifyResult& r, const std::string& source) {
     s += " (nominal " + fmt("%.4g", g.nominal[0] * kDeg) + " " + fmt("%.4g", g.nominal[1] * kDeg) +
          " " + fmt("%.4g", g.nominal[2] * kDeg) + ") -->\n  <imu gyro_bias=\"";
     for (int a = 0; a < 3; ++a)
-      s += std::string(a ? " " : "") + fmt("%.6g", g.value[a] * kDeg) + "deg";
+      s += std::string(a ? " " : "") + fmt("%.9g", g.value[a] * kDeg) + "deg";
     s += "\"/>\n";
   }
   return s + "</robot_override>\n";

@@ -95,6 +95,35 @@ TEST(IdentifyInput, JointsMustBeLegJoints) {
             std::string::npos);
 }
 
+// A robot override file that is not one: errors at its own line, or at the <include>.
+TEST(IdentifyInput, BadRobotOverrideFileIsNamed) {
+  const fs::path dir = fs::temp_directory_path();
+  std::ofstream(dir / "not_override.xml") << "<scene/>";
+  std::ofstream(dir / "bad_child.xml") << "<robot_override>\n  <joints LKneePitch=\"1\"/>\n"
+                                          "</robot_override>";
+  std::ofstream(dir / "bad_imu.xml") << "<robot_override>\n<imu gyro_bias=\"1 2\"/>\n"
+                                        "</robot_override>";
+  const auto scene_with = [&](const std::string& file) {
+    return "<scene><robot urdf=\"" STRIDE_SOURCE_DIR
+           "/scenes/robots/nao/nao.urdf\" devices=\"" STRIDE_SOURCE_DIR
+           "/scenes/robots/nao/nao.devices.xml\">\n<include file=\"" +
+           file + "\"/></robot></scene>";
+  };
+  const std::string at = (dir / "s.xml").string();
+  const auto error = [&](const std::string& file) {
+    return error_of([&] { sim::parse_scene_text(scene_with(file), at); });
+  };
+  EXPECT_NE(error("not_override.xml").find("not_override.xml:1: expected <robot_override>"),
+            std::string::npos)
+      << error("not_override.xml");
+  EXPECT_NE(error("bad_child.xml")
+                .find("bad_child.xml:2: <joints>: unexpected element in <robot_override>"),
+            std::string::npos)
+      << error("bad_child.xml");
+  EXPECT_NE(error("bad_imu.xml").find("bad_imu.xml:2:"), std::string::npos) << error("bad_imu.xml");
+  EXPECT_NE(error("missing.xml").find("s.xml:2:"), std::string::npos) << error("missing.xml");
+}
+
 // The command: a bad log writes no override file, a bad --params reads no log.
 TEST(IdentifyInput, CommandWritesNothingOnError) {
   const auto& table = cli::subcommands();
