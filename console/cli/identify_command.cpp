@@ -1,4 +1,4 @@
-// `stride identify <log> [--robot <urdf>] [--params gain,offset,gyro_bias] [--joints a,b]
+// `stride identify <log> [--robot <urdf>] [--params gain,torque,gyro_bias] [--joints a,b]
 // [--out robot-id.xml] [--csv traces.csv] [--jobs N] [--iterations N]`: fits a robot's servo
 // parameters and gyro bias to its log (console/identify/), writes the robot override file.
 #include <ostream>
@@ -13,9 +13,9 @@
 namespace stride::cli {
 
 std::string_view identify_summary() {
-  return "identify <log> [--robot <urdf>] [--params gain,torque,offset,gyro_bias] [--joints "
+  return "identify <log> [--robot <urdf>] [--params gain,torque,gyro_bias] [--joints "
          "LKneePitch,...] [--out robot-id.xml] [--csv traces.csv] [--jobs N] [--iterations N]: "
-         "fits the leg servos' gain, torque limit and encoder offset and the gyro bias to a "
+         "fits the leg servos' gain and torque limit and the gyro bias to a "
          "robot's log (`stride robot --log` of an excitation motion, docs/identify.md) by "
          "replaying its commands in simulation; writes a robot override file a scene includes";
 }
