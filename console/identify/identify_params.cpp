@@ -23,13 +23,7 @@ std::vector<std::string> split(const std::string& text) {
 }  // namespace
 
 std::string_view kind_name(ParamKind k) {
-  switch (k) {
-    case ParamKind::gain:
-      return "gain";
-    case ParamKind::torque:
-      return "torque";
-  }
-  return "?";
+  return enum_name(k);
 }
 
 ParamChoice parse_param_list(const std::string& text) {
@@ -47,9 +41,7 @@ ParamChoice parse_param_list(const std::string& text) {
   const auto words = split(text);
   if (words.empty()) throw Error("stride identify: --params: empty list; " + expected);
   for (const std::string& w : words) {
-    std::optional<ParamKind> k;
-    for (auto kind : {ParamKind::gain, ParamKind::torque})
-      if (w == kind_name(kind)) k = kind;
+    const std::optional<ParamKind> k = enum_from_name<ParamKind>(w);
     const bool repeated =
         (k && std::ranges::count(c.kinds, *k) > 0) || (w == "gyro_bias" && c.gyro_bias);
     if (repeated) throw Error("stride identify: --params: '" + w + "' given twice");

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "robot/framework/enum_names.hpp"
 #include "simulator/devices/device_description.hpp"
 
 namespace stride::identify {
@@ -11,6 +12,18 @@ namespace stride::identify {
 // gain: the velocity servo's 1/s; torque: the motor's stall torque (the torque limit at
 // stiffness 1).
 enum class ParamKind { gain, torque };
+
+}  // namespace stride::identify
+
+namespace stride {
+template <>
+struct EnumNames<identify::ParamKind> {
+  static constexpr std::string_view type_name = "ParamKind";
+  static constexpr std::array<std::string_view, 2> names{"gain", "torque"};
+};
+}  // namespace stride
+
+namespace stride::identify {
 
 struct ParamChoice {
   std::vector<ParamKind> kinds;  // per joint
