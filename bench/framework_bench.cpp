@@ -17,12 +17,10 @@ inline constexpr std::array<std::string_view, 26> kNames = {
 
 template <int N>
 struct Rep {
-  double x = 0;
-  std::array<double, 6> pad{};
+  STRIDE_FIELDS(Rep);
+  STRIDE_FIELD(double, x) = 0;
+  STRIDE_FIELD((std::array<double, 6>), pad){};
   static constexpr std::string_view kTypeName = kNames[N];
-  static constexpr auto fields() {
-    return std::make_tuple(field("x", &Rep::x), field("pad", &Rep::pad));
-  }
 };
 
 // Rep<N> = Rep<N-1> + 1; Rep<0> from FrameInfo.

@@ -26,21 +26,17 @@ struct Touchdown {
 };
 
 struct LandingMetricsResult {
-  int touchdowns = 0;
-  double mean_impulse = 0, mean_peak_force = 0, mean_peak_fsr = 0;  // over the touch-downs
-  double max_peak_force = 0, max_peak_fsr = 0;
-  int rebounds = 0;
+  STRIDE_FIELDS(LandingMetricsResult);
+  STRIDE_FIELD(int, touchdowns) = 0;
+  // over the touch-downs
+  STRIDE_FIELD(double, mean_impulse, "N*s") = 0;
+  STRIDE_FIELD(double, mean_peak_force, "N") = 0;
+  STRIDE_FIELD(double, mean_peak_fsr, "N") = 0;
+  STRIDE_FIELD(double, max_peak_force, "N") = 0;
+  STRIDE_FIELD(double, max_peak_fsr, "N") = 0;
+  STRIDE_FIELD(int, rebounds) = 0;
 
   static constexpr std::string_view kTypeName = "LandingMetricsResult";
-  static constexpr auto fields() {
-    using L = LandingMetricsResult;
-    return std::make_tuple(
-        field("touchdowns", &L::touchdowns), field("mean_impulse", &L::mean_impulse, "N*s"),
-        field("mean_peak_force", &L::mean_peak_force, "N"),
-        field("mean_peak_fsr", &L::mean_peak_fsr, "N"),
-        field("max_peak_force", &L::max_peak_force, "N"),
-        field("max_peak_fsr", &L::max_peak_fsr, "N"), field("rebounds", &L::rebounds));
-  }
 };
 
 // The means, maxima and rebound count of the touch-downs at or after time `from` (s).

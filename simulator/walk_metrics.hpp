@@ -31,46 +31,45 @@ namespace stride::sim {
 inline constexpr double kTipAngle = 0.4;
 
 struct WalkMetricsResult {
-  int steps = 0;                        // double supports entered after a single support
-  double fk_distance = 0;               // m, sum of FK step lengths (thesis' method)
-  double true_distance = 0;             // m, ground-truth advance of the feet's midpoint
-  double torso_distance = 0;            // m, ground-truth torso advance
-  double duration = 0;                  // s, observed time
-  double fk_speed = 0, true_speed = 0;  // m/s
-  double mean_step_length = 0;          // m, ground truth
-  double pitch_min = 0, pitch_max = 0, roll_min = 0, roll_max = 0;  // rad, torso
-  double yaw_min = 0, yaw_max = 0;  // rad, torso heading (unwrapped) relative to the first frame
-  bool fell = false;
-  double fell_at = -1;          // s
-  Tip tipped = Tip::None;       // the first pass of kTipAngle in pitch or roll
-  double tipped_at = -1;        // s
-  double foot_slip = 0;         // m, summed horizontal displacement of each foot per stance
-  double foot_slip_net_x = 0;   // m, signed forward part of it (negative: feet slid back)
-  double foot_tilt_max = 0;     // rad, largest sole tilt from the vertical while loaded
-  double foot_tilted_time = 0;  // s, time a loaded foot was tilted by more than kTiltedFoot
-  double foot_spin = 0;         // rad, summed |net yaw turn| of each foot per stance (Sec. 4.4)
-  double foot_spin_max = 0;     // rad, the largest turn of one foot in one stance
+  STRIDE_FIELDS(WalkMetricsResult);
+  // double supports entered after a single support
+  STRIDE_FIELD(int, steps) = 0;
+  // m, sum of FK step lengths (thesis' method)
+  STRIDE_FIELD(double, fk_distance, "m") = 0;
+  // m, ground-truth advance of the feet's midpoint
+  STRIDE_FIELD(double, true_distance, "m") = 0;
+  STRIDE_FIELD(double, torso_distance, "m") = 0;  // m, ground-truth torso advance
+  STRIDE_FIELD(double, duration, "s") = 0;        // s, observed time
+  STRIDE_FIELD(double, fk_speed, "m/s") = 0;
+  STRIDE_FIELD(double, true_speed, "m/s") = 0;
+  STRIDE_FIELD(double, mean_step_length, "m") = 0;  // m, ground truth
+  // rad, torso
+  STRIDE_FIELD(double, pitch_min, "rad") = 0;
+  STRIDE_FIELD(double, pitch_max, "rad") = 0;
+  STRIDE_FIELD(double, roll_min, "rad") = 0;
+  STRIDE_FIELD(double, roll_max, "rad") = 0;
+  // rad, torso heading (unwrapped) relative to the first frame
+  STRIDE_FIELD(double, yaw_min, "rad") = 0;
+  STRIDE_FIELD(double, yaw_max, "rad") = 0;
+  STRIDE_FIELD(bool, fell) = false;
+  STRIDE_FIELD(double, fell_at, "s") = -1;
+  STRIDE_FIELD(Tip, tipped) = Tip::None;  // the first pass of kTipAngle in pitch or roll
+  STRIDE_FIELD(double, tipped_at, "s") = -1;
+  // m, summed horizontal displacement of each foot per stance
+  STRIDE_FIELD(double, foot_slip, "m") = 0;
+  // m, signed forward part of it (negative: feet slid back)
+  STRIDE_FIELD(double, foot_slip_net_x, "m") = 0;
+  // rad, largest sole tilt from the vertical while loaded
+  STRIDE_FIELD(double, foot_tilt_max, "rad") = 0;
+  // s, time a loaded foot was tilted by more than kTiltedFoot
+  STRIDE_FIELD(double, foot_tilted_time, "s") = 0;
+  // rad, summed |net yaw turn| of each foot per stance (Sec. 4.4)
+  STRIDE_FIELD(double, foot_spin, "rad") = 0;
+  // rad, the largest turn of one foot in one stance
+  STRIDE_FIELD(double, foot_spin_max, "rad") = 0;
 
   // The list that names a run report's walk fields and a sweep's `walk.<field>` keys.
   static constexpr std::string_view kTypeName = "WalkMetricsResult";
-  static constexpr auto fields() {
-    using W = WalkMetricsResult;
-    return std::make_tuple(
-        field("steps", &W::steps), field("fk_distance", &W::fk_distance, "m"),
-        field("true_distance", &W::true_distance, "m"),
-        field("torso_distance", &W::torso_distance, "m"), field("duration", &W::duration, "s"),
-        field("fk_speed", &W::fk_speed, "m/s"), field("true_speed", &W::true_speed, "m/s"),
-        field("mean_step_length", &W::mean_step_length, "m"),
-        field("pitch_min", &W::pitch_min, "rad"), field("pitch_max", &W::pitch_max, "rad"),
-        field("roll_min", &W::roll_min, "rad"), field("roll_max", &W::roll_max, "rad"),
-        field("yaw_min", &W::yaw_min, "rad"), field("yaw_max", &W::yaw_max, "rad"),
-        field("fell", &W::fell), field("fell_at", &W::fell_at, "s"), field("tipped", &W::tipped),
-        field("tipped_at", &W::tipped_at, "s"), field("foot_slip", &W::foot_slip, "m"),
-        field("foot_slip_net_x", &W::foot_slip_net_x, "m"),
-        field("foot_tilt_max", &W::foot_tilt_max, "rad"),
-        field("foot_tilted_time", &W::foot_tilted_time, "s"),
-        field("foot_spin", &W::foot_spin, "rad"), field("foot_spin_max", &W::foot_spin_max, "rad"));
-  }
 };
 
 // A loaded sole tilted beyond this rocks on an edge rather than standing flat (1.15 deg; the

@@ -26,29 +26,24 @@ struct EnumNames<behaviours::ExcitationMotion> {
 namespace stride::behaviours {
 
 struct ExcitationParameters {
-  ExcitationMotion motion = ExcitationMotion::chirp;
-  double amplitude = 0.15;   // rad: largest departure of a joint from the base posture
-  double max_speed = 1.5;    // rad/s: no commanded joint moves faster
-  double f_low = 0.3;        // Hz: chirp start; steps: the slowest joint's switching rate
-  double f_high = 2.5;       // Hz: chirp end
-  double start_delay = 1.5;  // s from the measured pose to the base posture, then excitation
-  double duration = 8;       // s of excitation, envelope included
-  double ramp = 1;           // s of smooth envelope at each end of the excitation
-  double stiffness = 1;
+  STRIDE_FIELDS(ExcitationParameters);
+  STRIDE_FIELD(ExcitationMotion, motion) = ExcitationMotion::chirp;
+  // rad: largest departure of a joint from the base posture
+  STRIDE_FIELD(double, amplitude, "rad", Range{0, 0.4}) = 0.15;
+  // rad/s: no commanded joint moves faster
+  STRIDE_FIELD(double, max_speed, "rad/s", Range{0.05, 4}) = 1.5;
+  // Hz: chirp start; steps: the slowest joint's switching rate
+  STRIDE_FIELD(double, f_low, "Hz", Range{0.05, 5}) = 0.3;
+  STRIDE_FIELD(double, f_high, "Hz", Range{0.05, 5}) = 2.5;  // Hz: chirp end
+  // s from the measured pose to the base posture, then excitation
+  STRIDE_FIELD(double, start_delay, "s", Range{0.5, 60}) = 1.5;
+  // s of excitation, envelope included
+  STRIDE_FIELD(double, duration, "s", Range{1, 600}) = 8;
+  // s of smooth envelope at each end of the excitation
+  STRIDE_FIELD(double, ramp, "s", Range{0.1, 10}) = 1;
+  STRIDE_FIELD(double, stiffness, "", Range{0, 1}) = 1;
 
   static constexpr std::string_view kTypeName = "ExcitationParameters";
-  static constexpr auto fields() {
-    using P = ExcitationParameters;
-    return std::make_tuple(field("motion", &P::motion),
-                           field("amplitude", &P::amplitude, "rad", Range{0, 0.4}),
-                           field("max_speed", &P::max_speed, "rad/s", Range{0.05, 4}),
-                           field("f_low", &P::f_low, "Hz", Range{0.05, 5}),
-                           field("f_high", &P::f_high, "Hz", Range{0.05, 5}),
-                           field("start_delay", &P::start_delay, "s", Range{0.5, 60}),
-                           field("duration", &P::duration, "s", Range{1, 600}),
-                           field("ramp", &P::ramp, "s", Range{0.1, 10}),
-                           field("stiffness", &P::stiffness, "", Range{0, 1}));
-  }
 };
 
 using JointTargets = std::array<double, hal::kNumJoints>;

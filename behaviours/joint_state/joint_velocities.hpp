@@ -12,12 +12,10 @@
 namespace stride {
 
 struct JointVelocities {
-  std::array<double, hal::kNumJoints> velocity{};  // LoLA order
+  STRIDE_FIELDS(JointVelocities);
+  STRIDE_FIELD((std::array<double, hal::kNumJoints>), velocity, "rad/s"){};  // LoLA order
 
   static constexpr std::string_view kTypeName = "JointVelocities";
-  static constexpr auto fields() {
-    return std::make_tuple(field("velocity", &JointVelocities::velocity, "rad/s"));
-  }
 };
 
 namespace behaviours {

@@ -22,19 +22,17 @@ namespace stride {
 
 // What landing control did this frame, per foot (left, right).
 struct LandingControlState {
-  std::array<behaviours::LandingStage, 2> stage{};
-  Eigen::Vector2d lift = Eigen::Vector2d::Zero();   // m, sole raised along the torso z axis
-  Eigen::Vector2d pitch = Eigen::Vector2d::Zero();  // rad, added to AnklePitch
-  Eigen::Vector2d roll = Eigen::Vector2d::Zero();   // rad, added to AnkleRoll
-  double excess_force = 0;                          // N, FSR total less the robot's weight
+  STRIDE_FIELDS(LandingControlState);
+  STRIDE_FIELD((std::array<behaviours::LandingStage, 2>), stage){};
+  // m, sole raised along the torso z axis
+  STRIDE_FIELD(Eigen::Vector2d, lift, "m") = Eigen::Vector2d::Zero();
+  // rad, added to AnklePitch
+  STRIDE_FIELD(Eigen::Vector2d, pitch, "rad") = Eigen::Vector2d::Zero();
+  STRIDE_FIELD(Eigen::Vector2d, roll, "rad") = Eigen::Vector2d::Zero();  // rad, added to AnkleRoll
+  // N, FSR total less the robot's weight
+  STRIDE_FIELD(double, excess_force, "N") = 0;
 
   static constexpr std::string_view kTypeName = "LandingControlState";
-  static constexpr auto fields() {
-    using L = LandingControlState;
-    return std::make_tuple(field("stage", &L::stage), field("lift", &L::lift, "m"),
-                           field("pitch", &L::pitch, "rad"), field("roll", &L::roll, "rad"),
-                           field("excess_force", &L::excess_force, "N"));
-  }
 };
 
 }  // namespace stride
@@ -45,23 +43,28 @@ namespace stride::behaviours {
 // robot's weight (a softer 3000 N/m sole lifted off again after most touch-downs at ODE's study
 // setting: scenes/experiments/README.md); ankles that give 1 deg per 0.9 N m of moment.
 struct LandingControlParameters {
-  double mass = 1.5;            // M of Eq. 6.13, kg (0: the first-order law of Eq. 6.17)
-  double damping = 350;         // B, N s/m
-  double stiffness = 20000;     // K, N/m
-  double ankle_inertia = 0.01;  // rotational M, kg m^2
-  double ankle_damping = 1.4;   // N m s/rad
-  double ankle_stiffness = 50;  // N m/rad
-  double weight = 52.04;        // N the FSRs read with the robot at rest (5.305 kg)
-  double max_lift = 0.02;       // m, largest raise of a sole
-  double max_drop = 0.01;       // m, largest lowering of a sole
-  double max_tilt = 0.15;       // rad, largest ankle offset
-  Eigen::Vector2d cop_reference = Eigen::Vector2d::Zero();  // m, ankle frame: no moment here
-  double landing_stiffness = 1;  // servo stiffness of the landing leg while it acts
-  double lift_height = 0.004;    // see LandingWindow
-  double touch_height = 0.0005;
-  double contact_force = 5;
-  double hold_time = 0.12;
-  double return_time = 0.10;
+  STRIDE_FIELDS(LandingControlParameters);
+  // M of Eq. 6.13, kg (0: the first-order law of Eq. 6.17)
+  STRIDE_FIELD(double, mass, "kg", Range{0, 100}) = 1.5;
+  STRIDE_FIELD(double, damping, "N*s/m", Range{0, 1e5}) = 350;             // B, N s/m
+  STRIDE_FIELD(double, stiffness, "N/m", Range{1, 1e6}) = 20000;           // K, N/m
+  STRIDE_FIELD(double, ankle_inertia, "kg*m^2", Range{0, 10}) = 0.01;      // rotational M, kg m^2
+  STRIDE_FIELD(double, ankle_damping, "N*m*s/rad", Range{0, 1e3}) = 1.4;   // N m s/rad
+  STRIDE_FIELD(double, ankle_stiffness, "N*m/rad", Range{0.1, 1e5}) = 50;  // N m/rad
+  // N the FSRs read with the robot at rest (5.305 kg)
+  STRIDE_FIELD(double, weight, "N", Range{0, 1000}) = 52.04;
+  STRIDE_FIELD(double, max_lift, "m", Range{0, 0.05}) = 0.02;   // m, largest raise of a sole
+  STRIDE_FIELD(double, max_drop, "m", Range{0, 0.05}) = 0.01;   // m, largest lowering of a sole
+  STRIDE_FIELD(double, max_tilt, "rad", Range{0, 0.5}) = 0.15;  // rad, largest ankle offset
+  // m, ankle frame: no moment here
+  STRIDE_FIELD(Eigen::Vector2d, cop_reference, "m", Range{-0.1, 0.1}) = Eigen::Vector2d::Zero();
+  // servo stiffness of the landing leg while it acts
+  STRIDE_FIELD(double, landing_stiffness, "", Range{0, 1}) = 1;
+  STRIDE_FIELD(double, lift_height, "m", Range{0, 0.1}) = 0.004;  // see LandingWindow
+  STRIDE_FIELD(double, touch_height, "m", Range{0, 0.1}) = 0.0005;
+  STRIDE_FIELD(double, contact_force, "N", Range{0, 200}) = 5;
+  STRIDE_FIELD(double, hold_time, "s", Range{0, 2}) = 0.12;
+  STRIDE_FIELD(double, return_time, "s", Range{0, 2}) = 0.10;
 
   Admittance sole() const { return {mass, damping, stiffness}; }
   Admittance ankle() const { return {ankle_inertia, ankle_damping, ankle_stiffness}; }
@@ -70,27 +73,6 @@ struct LandingControlParameters {
   }
 
   static constexpr std::string_view kTypeName = "LandingControlParameters";
-  static constexpr auto fields() {
-    using P = LandingControlParameters;
-    return std::make_tuple(
-        field("mass", &P::mass, "kg", Range{0, 100}),
-        field("damping", &P::damping, "N*s/m", Range{0, 1e5}),
-        field("stiffness", &P::stiffness, "N/m", Range{1, 1e6}),
-        field("ankle_inertia", &P::ankle_inertia, "kg*m^2", Range{0, 10}),
-        field("ankle_damping", &P::ankle_damping, "N*m*s/rad", Range{0, 1e3}),
-        field("ankle_stiffness", &P::ankle_stiffness, "N*m/rad", Range{0.1, 1e5}),
-        field("weight", &P::weight, "N", Range{0, 1000}),
-        field("max_lift", &P::max_lift, "m", Range{0, 0.05}),
-        field("max_drop", &P::max_drop, "m", Range{0, 0.05}),
-        field("max_tilt", &P::max_tilt, "rad", Range{0, 0.5}),
-        field("cop_reference", &P::cop_reference, "m", Range{-0.1, 0.1}),
-        field("landing_stiffness", &P::landing_stiffness, "", Range{0, 1}),
-        field("lift_height", &P::lift_height, "m", Range{0, 0.1}),
-        field("touch_height", &P::touch_height, "m", Range{0, 0.1}),
-        field("contact_force", &P::contact_force, "N", Range{0, 200}),
-        field("hold_time", &P::hold_time, "s", Range{0, 2}),
-        field("return_time", &P::return_time, "s", Range{0, 2}));
-  }
 };
 
 // The leg's angles with its sole raised by `lift` along the torso's z axis (orientation kept,

@@ -29,32 +29,23 @@ void assemble_walking_request(const std::array<double, hal::kNumJoints>& positio
                               const ArmSwingRequest& arms, JointRequest& out);
 
 struct GyroCalibrationParameters {
-  double alpha = 0.001;  // Sec. 4.3.1
+  STRIDE_FIELDS(GyroCalibrationParameters);
+  STRIDE_FIELD(double, alpha, "", Range{0, 1}) = 0.001;  // Sec. 4.3.1
   // C starts at the first raw sample, as if the robot had stood long enough for the offset
   // of Eq. 4.1 and Eq. 4.2 to settle (1/alpha = 10 s at 10 ms); false starts it at 0.
-  bool start_at_first_sample = true;
+  STRIDE_FIELD(bool, start_at_first_sample) = true;
 
   static constexpr std::string_view kTypeName = "GyroCalibrationParameters";
-  static constexpr auto fields() {
-    using P = GyroCalibrationParameters;
-    return std::make_tuple(field("alpha", &P::alpha, "", Range{0, 1}),
-                           field("start_at_first_sample", &P::start_at_first_sample));
-  }
 };
 
 // Q, R and P_{0|0} = L * I as chosen in Sec. 4.3.2; state order [pitch, roll, rates].
 struct TorsoStateEstimatorParameters {
-  Eigen::Vector4d q_diagonal{1e-1, 1e-1, 1e-5, 1e-5};
-  Eigen::Vector4d r_diagonal{1e-4, 1e-4, 1e-3, 1e-3};
-  double initial_variance = 1000;  // L
+  STRIDE_FIELDS(TorsoStateEstimatorParameters);
+  STRIDE_FIELD(Eigen::Vector4d, q_diagonal, "", Range{0, 1e6}){1e-1, 1e-1, 1e-5, 1e-5};
+  STRIDE_FIELD(Eigen::Vector4d, r_diagonal, "", Range{1e-12, 1e6}){1e-4, 1e-4, 1e-3, 1e-3};
+  STRIDE_FIELD(double, initial_variance, "", Range{0, 1e9}) = 1000;  // L
 
   static constexpr std::string_view kTypeName = "TorsoStateEstimatorParameters";
-  static constexpr auto fields() {
-    using P = TorsoStateEstimatorParameters;
-    return std::make_tuple(field("q_diagonal", &P::q_diagonal, "", Range{0, 1e6}),
-                           field("r_diagonal", &P::r_diagonal, "", Range{1e-12, 1e6}),
-                           field("initial_variance", &P::initial_variance, "", Range{0, 1e9}));
-  }
 };
 
 // PD gains on the torso error and the desired torso inclination; desired rates are zero.
@@ -64,27 +55,19 @@ struct TorsoStateEstimatorParameters {
 // for pitch (K_p1, K_d1) and roll (K_p2, K_d2) alike.
 template <PostureJoints Joints>
 struct PostureStrategyParameters {
+  STRIDE_FIELDS(PostureStrategyParameters);
   static constexpr bool kHip = Joints == PostureJoints::Hip;
-  double kp_pitch = kHip ? 0.40 : 0.28;
-  double kd_pitch = kHip ? -0.05 : -0.06;
-  double kp_roll = kHip ? 0.40 : 0.28;
-  double kd_roll = kHip ? -0.05 : -0.06;
-  double desired_pitch = 0;
-  double desired_roll = 0;
+  STRIDE_FIELD(double, kp_pitch, "", Range{-5, 5}) = kHip ? 0.40 : 0.28;
+  STRIDE_FIELD(double, kd_pitch, "s", Range{-1, 1}) = kHip ? -0.05 : -0.06;
+  STRIDE_FIELD(double, kp_roll, "", Range{-5, 5}) = kHip ? 0.40 : 0.28;
+  STRIDE_FIELD(double, kd_roll, "s", Range{-1, 1}) = kHip ? -0.05 : -0.06;
+  STRIDE_FIELD(double, desired_pitch, "rad", Range{-0.5, 0.5}) = 0;
+  STRIDE_FIELD(double, desired_roll, "rad", Range{-0.5, 0.5}) = 0;
 
   PostureGains gains() const { return {kp_pitch, kd_pitch, kp_roll, kd_roll}; }
 
   static constexpr std::string_view kTypeName =
       kHip ? "HipStrategyParameters" : "AnkleStrategyParameters";
-  static constexpr auto fields() {
-    using P = PostureStrategyParameters;
-    return std::make_tuple(field("kp_pitch", &P::kp_pitch, "", Range{-5, 5}),
-                           field("kd_pitch", &P::kd_pitch, "s", Range{-1, 1}),
-                           field("kp_roll", &P::kp_roll, "", Range{-5, 5}),
-                           field("kd_roll", &P::kd_roll, "s", Range{-1, 1}),
-                           field("desired_pitch", &P::desired_pitch, "rad", Range{-0.5, 0.5}),
-                           field("desired_roll", &P::desired_roll, "rad", Range{-0.5, 0.5}));
-  }
 };
 using HipStrategyParameters = PostureStrategyParameters<PostureJoints::Hip>;
 using AnkleStrategyParameters = PostureStrategyParameters<PostureJoints::Ankle>;
@@ -93,12 +76,13 @@ using AnkleStrategyParameters = PostureStrategyParameters<PostureJoints::Ankle>;
 // (0.3897 + 0.2914 + 0.1618 kg); each arm = shoulder..hand links of the V5 URDF (nao-facts.md);
 // d_0 = 50 mm (Table 4.3); d_1 = ShoulderOffsetY; d_a = arm CoM from the shoulder (V5 URDF).
 struct ArmSwingParameters {
-  double swing_leg_mass = 0.8429;
-  double arm_mass = 0.57858;
-  double foot_half_distance = 0.050;
-  double arm_half_distance = 0.098;
-  double arm_com_distance = 0.0952;
-  double gain_scale = 1.0;  // 0 turns arm swing off
+  STRIDE_FIELDS(ArmSwingParameters);
+  STRIDE_FIELD(double, swing_leg_mass, "kg", Range{0, 10}) = 0.8429;
+  STRIDE_FIELD(double, arm_mass, "kg", Range{0.01, 10}) = 0.57858;
+  STRIDE_FIELD(double, foot_half_distance, "m", Range{0, 0.5}) = 0.050;
+  STRIDE_FIELD(double, arm_half_distance, "m", Range{0.01, 0.5}) = 0.098;
+  STRIDE_FIELD(double, arm_com_distance, "m", Range{0.01, 0.5}) = 0.0952;
+  STRIDE_FIELD(double, gain_scale, "", Range{0, 5}) = 1.0;  // 0 turns arm swing off
 
   ArmSwingModel model() const {
     return {swing_leg_mass,     arm_mass,          arm_mass,
@@ -106,15 +90,6 @@ struct ArmSwingParameters {
   }
 
   static constexpr std::string_view kTypeName = "ArmSwingParameters";
-  static constexpr auto fields() {
-    using P = ArmSwingParameters;
-    return std::make_tuple(field("swing_leg_mass", &P::swing_leg_mass, "kg", Range{0, 10}),
-                           field("arm_mass", &P::arm_mass, "kg", Range{0.01, 10}),
-                           field("foot_half_distance", &P::foot_half_distance, "m", Range{0, 0.5}),
-                           field("arm_half_distance", &P::arm_half_distance, "m", Range{0.01, 0.5}),
-                           field("arm_com_distance", &P::arm_com_distance, "m", Range{0.01, 0.5}),
-                           field("gain_scale", &P::gain_scale, "", Range{0, 5}));
-  }
 };
 
 void register_posture_modules(ModuleRegistry& registry);

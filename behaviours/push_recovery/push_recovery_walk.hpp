@@ -21,33 +21,30 @@
 namespace stride {
 
 struct PushRecoveryState {
-  behaviours::PushResponse sagittal =
-      behaviours::PushResponse::none;  // this frame's classification, x
-  behaviours::PushResponse lateral =
-      behaviours::PushResponse::none;                        // y (ankle or step: Ch. 7 is sagittal)
-  Eigen::Vector2d deviation = Eigen::Vector2d::Zero();       // m, CoM - plan
-  Eigen::Vector2d deviation_rate = Eigen::Vector2d::Zero();  // m/s
-  Eigen::Vector2d capture_deviation = Eigen::Vector2d::Zero();  // m, of the capture point
-  Eigen::Vector2d planned_zmp = Eigen::Vector2d::Zero();        // m, from the stance ankle
-  Eigen::Vector2d ankle_offset = Eigen::Vector2d::Zero();       // rad: stance pitch, roll
-  double hat_angle = 0;                                         // rad, trunk forward
-  int steps_moved = 0;                                          // landings moved so far
-  Eigen::Vector2d walk_offset = Eigen::Vector2d::Zero();        // m, the walk moved in all
-  double first_detection = -1;                                  // s, first frame not none
-  double gait_phase = 0;                                        // 0..1 of the stride
+  STRIDE_FIELDS(PushRecoveryState);
+  // this frame's classification, x
+  STRIDE_FIELD(behaviours::PushResponse, sagittal) = behaviours::PushResponse::none;
+  // y (ankle or step: Ch. 7 is sagittal)
+  STRIDE_FIELD(behaviours::PushResponse, lateral) = behaviours::PushResponse::none;
+  STRIDE_FIELD(Eigen::Vector2d, deviation, "m") = Eigen::Vector2d::Zero();  // m, CoM - plan
+  STRIDE_FIELD(Eigen::Vector2d, deviation_rate, "m/s") = Eigen::Vector2d::Zero();
+  // m, of the capture point
+  STRIDE_FIELD(Eigen::Vector2d, capture_deviation, "m") = Eigen::Vector2d::Zero();
+  // m, from the stance ankle
+  STRIDE_FIELD(Eigen::Vector2d, planned_zmp, "m") = Eigen::Vector2d::Zero();
+  // rad: stance pitch, roll
+  STRIDE_FIELD(Eigen::Vector2d, ankle_offset, "rad") = Eigen::Vector2d::Zero();
+  // rad, trunk forward
+  STRIDE_FIELD(double, hat_angle, "rad") = 0;
+  // landings moved so far
+  STRIDE_FIELD(int, steps_moved) = 0;
+  // m, the walk moved in all
+  STRIDE_FIELD(Eigen::Vector2d, walk_offset, "m") = Eigen::Vector2d::Zero();
+  // s, first frame not none
+  STRIDE_FIELD(double, first_detection, "s") = -1;
+  STRIDE_FIELD(double, gait_phase) = 0;  // 0..1 of the stride
 
   static constexpr std::string_view kTypeName = "PushRecoveryState";
-  static constexpr auto fields() {
-    using S = PushRecoveryState;
-    return std::make_tuple(
-        field("sagittal", &S::sagittal), field("lateral", &S::lateral),
-        field("deviation", &S::deviation, "m"), field("deviation_rate", &S::deviation_rate, "m/s"),
-        field("capture_deviation", &S::capture_deviation, "m"),
-        field("planned_zmp", &S::planned_zmp, "m"), field("ankle_offset", &S::ankle_offset, "rad"),
-        field("hat_angle", &S::hat_angle, "rad"), field("steps_moved", &S::steps_moved),
-        field("walk_offset", &S::walk_offset, "m"),
-        field("first_detection", &S::first_detection, "s"), field("gait_phase", &S::gait_phase));
-  }
 };
 
 }  // namespace stride
@@ -55,76 +52,57 @@ struct PushRecoveryState {
 namespace stride::behaviours {
 
 struct PushRecoveryParameters {
-  bool enabled = true;  // false: the plain pattern, PatternWalk's targets exactly
+  STRIDE_FIELDS(PushRecoveryParameters);
+  STRIDE_FIELD(bool, enabled) = true;  // false: the plain pattern, PatternWalk's targets exactly
   // m of capture-point deviation that is the walk's own (the unpushed medium walk on the 3 mm
   // floor reaches -0.061..0.025 m forward and -0.069..0.054 m sideways)
-  double threshold = 0.07;
-  double lateral_threshold = 0.08;
-  bool hip = true;  // sagittal hip and combined responses allowed
+  STRIDE_FIELD(double, threshold, "m", Range{0, 0.5}) = 0.07;
+  STRIDE_FIELD(double, lateral_threshold, "m", Range{0, 0.5}) = 0.08;
+  STRIDE_FIELD(bool, hip) = true;  // sagittal hip and combined responses allowed
   // m of capture-point deviation beyond which the stance ankle acts (per axis); the thresholds
   // above gate the hip, combined and step responses only. Sagittally the ankle acts from 2 cm,
   // before a push is classified (at 7 cm, the first measurement, it came too late: README);
   // sideways from the lateral threshold (acting on the walk's own +-5 cm sway lost more walks).
-  double ankle_threshold = 0.02, ankle_lateral_threshold = 0.08;
-  double ankle_pitch_gain = 1.5;  // rad per m of capture-point deviation beyond the threshold
-  double ankle_roll_gain = 1.5;
-  double max_ankle = 0.12;  // rad
-  double tau_forward = 14;  // N m, both hips together (HipBalance's)
-  double tau_backward = -14;
-  double max_hat = 0.35;  // rad
-  double hat_hold_time = 0.15;
-  double hat_return_time = 0.4;
-  double step_gain = 1.0;
-  double max_forward = 0.04, max_backward = 0.03, max_outward = 0.04, max_inward = 0.01;  // m
-  double min_swing_time = 0.06;   // s a swing must have left to be moved
-  double step_tolerance = 0.008;  // m: smaller moves of a landing are not made
-  double lower = 0.015;           // m the waist is lowered for a recovery step
-  double lower_hold = 0.5;        // s
-  double lower_return = 0.5;      // s
-  double com_offset_time = 0.5;   // s before the walk over which the CoM-waist offset is learned
+  STRIDE_FIELD(double, ankle_threshold, "m", Range{0, 0.5}) = 0.02;
+  STRIDE_FIELD(double, ankle_lateral_threshold, "m", Range{0, 0.5}) = 0.08;
+  // rad per m of capture-point deviation beyond the threshold
+  STRIDE_FIELD(double, ankle_pitch_gain, "rad/m", Range{0, 20}) = 1.5;
+  STRIDE_FIELD(double, ankle_roll_gain, "rad/m", Range{0, 20}) = 1.5;
+  STRIDE_FIELD(double, max_ankle, "rad", Range{0, 0.5}) = 0.12;
+  // N m, both hips together (HipBalance's)
+  STRIDE_FIELD(double, tau_forward, "N*m", Range{0.01, 100}) = 14;
+  STRIDE_FIELD(double, tau_backward, "N*m", Range{-100, -0.01}) = -14;
+  STRIDE_FIELD(double, max_hat, "rad", Range{0, 1}) = 0.35;
+  STRIDE_FIELD(double, hat_hold_time, "s", Range{0, 5}) = 0.15;
+  STRIDE_FIELD(double, hat_return_time, "s", Range{0.01, 5}) = 0.4;
+  STRIDE_FIELD(double, step_gain, "", Range{0, 3}) = 1.0;
+  STRIDE_FIELD(double, max_forward, "m", Range{0, 0.15}) = 0.04;
+  STRIDE_FIELD(double, max_backward, "m", Range{0, 0.15}) = 0.03;
+  STRIDE_FIELD(double, max_outward, "m", Range{0, 0.15}) = 0.04;
+  STRIDE_FIELD(double, max_inward, "m", Range{0, 0.1}) = 0.01;
+  // s a swing must have left to be moved
+  STRIDE_FIELD(double, min_swing_time, "s", Range{0, 1}) = 0.06;
+  // m: smaller moves of a landing are not made
+  STRIDE_FIELD(double, step_tolerance, "m", Range{0, 0.1}) = 0.008;
+  // m the waist is lowered for a recovery step
+  STRIDE_FIELD(double, lower, "m", Range{0, 0.06}) = 0.015;
+  STRIDE_FIELD(double, lower_hold, "s", Range{0, 10}) = 0.5;
+  STRIDE_FIELD(double, lower_return, "s", Range{0.01, 10}) = 0.5;
+  // s before the walk over which the CoM-waist offset is learned
+  STRIDE_FIELD(double, com_offset_time, "s", Range{0.01, 10}) = 0.5;
 
   StepLimits limits() const { return {max_forward, max_backward, max_outward, max_inward}; }
 
   static constexpr std::string_view kTypeName = "PushRecoveryParameters";
-  static constexpr auto fields() {
-    using P = PushRecoveryParameters;
-    return std::make_tuple(
-        field("enabled", &P::enabled), field("threshold", &P::threshold, "m", Range{0, 0.5}),
-        field("lateral_threshold", &P::lateral_threshold, "m", Range{0, 0.5}),
-        field("hip", &P::hip), field("ankle_threshold", &P::ankle_threshold, "m", Range{0, 0.5}),
-        field("ankle_lateral_threshold", &P::ankle_lateral_threshold, "m", Range{0, 0.5}),
-        field("ankle_pitch_gain", &P::ankle_pitch_gain, "rad/m", Range{0, 20}),
-        field("ankle_roll_gain", &P::ankle_roll_gain, "rad/m", Range{0, 20}),
-        field("max_ankle", &P::max_ankle, "rad", Range{0, 0.5}),
-        field("tau_forward", &P::tau_forward, "N*m", Range{0.01, 100}),
-        field("tau_backward", &P::tau_backward, "N*m", Range{-100, -0.01}),
-        field("max_hat", &P::max_hat, "rad", Range{0, 1}),
-        field("hat_hold_time", &P::hat_hold_time, "s", Range{0, 5}),
-        field("hat_return_time", &P::hat_return_time, "s", Range{0.01, 5}),
-        field("step_gain", &P::step_gain, "", Range{0, 3}),
-        field("max_forward", &P::max_forward, "m", Range{0, 0.15}),
-        field("max_backward", &P::max_backward, "m", Range{0, 0.15}),
-        field("max_outward", &P::max_outward, "m", Range{0, 0.15}),
-        field("max_inward", &P::max_inward, "m", Range{0, 0.1}),
-        field("min_swing_time", &P::min_swing_time, "s", Range{0, 1}),
-        field("step_tolerance", &P::step_tolerance, "m", Range{0, 0.1}),
-        field("lower", &P::lower, "m", Range{0, 0.06}),
-        field("lower_hold", &P::lower_hold, "s", Range{0, 10}),
-        field("lower_return", &P::lower_return, "s", Range{0.01, 10}),
-        field("com_offset_time", &P::com_offset_time, "s", Range{0.01, 10}));
-  }
 };
 
 // The walk (PatternWalk's parameters) and the recovery, as `walk.<field>` and `recovery.<field>`.
 struct PushRecoveryWalkParameters {
-  WalkParameters walk;
-  PushRecoveryParameters recovery;
+  STRIDE_FIELDS(PushRecoveryWalkParameters);
+  STRIDE_FIELD(WalkParameters, walk);
+  STRIDE_FIELD(PushRecoveryParameters, recovery);
 
   static constexpr std::string_view kTypeName = "PushRecoveryWalkParameters";
-  static constexpr auto fields() {
-    using P = PushRecoveryWalkParameters;
-    return std::make_tuple(field("walk", &P::walk), field("recovery", &P::recovery));
-  }
 };
 
 void register_push_recovery_modules(ModuleRegistry& registry);

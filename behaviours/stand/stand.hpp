@@ -12,30 +12,20 @@ namespace stride::behaviours {
 // Left-side angles; the right side is mirrored where the joint is (roll and yaw joints).
 // Ranges are the joint limits of nao-facts.md.
 struct StandParameters {
-  double hip_pitch = nao::kStandHipPitch;
-  double knee_pitch = nao::kStandKneePitch;
-  double ankle_pitch = nao::kStandAnklePitch;
-  double shoulder_pitch = 1.5;  // arms hanging down
-  double shoulder_roll = 0.1;   // slightly away from the body
-  double elbow_yaw = 0.0;
-  double elbow_roll = -0.05;  // nearly straight
-  double stiffness = 0.8;
-  double interpolation_time = 1.0;  // from the measured pose to the posture
+  STRIDE_FIELDS(StandParameters);
+  STRIDE_FIELD(double, hip_pitch, "rad", Range{-1.53589, 0.48398}) = nao::kStandHipPitch;
+  STRIDE_FIELD(double, knee_pitch, "rad", Range{-0.0923279, 2.11255}) = nao::kStandKneePitch;
+  STRIDE_FIELD(double, ankle_pitch, "rad", Range{-1.18944, 0.922581}) = nao::kStandAnklePitch;
+  STRIDE_FIELD(double, shoulder_pitch, "rad", Range{-2.08567, 2.08567}) = 1.5;  // arms hanging down
+  // slightly away from the body
+  STRIDE_FIELD(double, shoulder_roll, "rad", Range{-0.314159, 1.32645}) = 0.1;
+  STRIDE_FIELD(double, elbow_yaw, "rad", Range{-2.08567, 2.08567}) = 0.0;
+  STRIDE_FIELD(double, elbow_roll, "rad", Range{-1.54462, -0.0349066}) = -0.05;  // nearly straight
+  STRIDE_FIELD(double, stiffness, "", Range{0, 1}) = 0.8;
+  // from the measured pose to the posture
+  STRIDE_FIELD(double, interpolation_time, "s", Range{0, 10}) = 1.0;
 
   static constexpr std::string_view kTypeName = "StandParameters";
-  static constexpr auto fields() {
-    using P = StandParameters;
-    return std::make_tuple(
-        field("hip_pitch", &P::hip_pitch, "rad", Range{-1.53589, 0.48398}),
-        field("knee_pitch", &P::knee_pitch, "rad", Range{-0.0923279, 2.11255}),
-        field("ankle_pitch", &P::ankle_pitch, "rad", Range{-1.18944, 0.922581}),
-        field("shoulder_pitch", &P::shoulder_pitch, "rad", Range{-2.08567, 2.08567}),
-        field("shoulder_roll", &P::shoulder_roll, "rad", Range{-0.314159, 1.32645}),
-        field("elbow_yaw", &P::elbow_yaw, "rad", Range{-2.08567, 2.08567}),
-        field("elbow_roll", &P::elbow_roll, "rad", Range{-1.54462, -0.0349066}),
-        field("stiffness", &P::stiffness, "", Range{0, 1}),
-        field("interpolation_time", &P::interpolation_time, "s", Range{0, 10}));
-  }
 };
 
 // The posture's joint angles in LoLA order.

@@ -44,22 +44,20 @@ LegTrackingStep leg3d_tracking_step(Controller controller, const Leg5& q, const 
 namespace stride::behaviours {
 
 struct SwingLegTrackingParameters {
-  swing_leg::Controller controller = swing_leg::Controller::Adaptive;
-  double lambda = 20;                                      // Lambda = lambda I, 1/s
-  double kd = 0.1;                                         // K_D = kd I, N m s/rad
-  swing_leg::Leg17 gamma = swing_leg::thesis_ode_gamma();  // diagonal of Gamma
-  WalkPreset preset = WalkPreset::medium;                  // the pattern the leg follows
-  double hold_stiffness = 1;                               // the joints that keep their angle
+  STRIDE_FIELDS(SwingLegTrackingParameters);
+  STRIDE_FIELD(swing_leg::Controller, controller) = swing_leg::Controller::Adaptive;
+  // Lambda = lambda I, 1/s
+  STRIDE_FIELD(double, lambda, "1/s", Range{1e-3, 1e4}) = 20;
+  // K_D = kd I, N m s/rad
+  STRIDE_FIELD(double, kd, "N*m*s/rad", Range{1e-6, 1e3}) = 0.1;
+  // diagonal of Gamma
+  STRIDE_FIELD(swing_leg::Leg17, gamma, "", Range{0, 1e6}) = swing_leg::thesis_ode_gamma();
+  // the pattern the leg follows
+  STRIDE_FIELD(WalkPreset, preset) = WalkPreset::medium;
+  // the joints that keep their angle
+  STRIDE_FIELD(double, hold_stiffness, "", Range{0, 1}) = 1;
 
   static constexpr std::string_view kTypeName = "SwingLegTrackingParameters";
-  static constexpr auto fields() {
-    using P = SwingLegTrackingParameters;
-    return std::make_tuple(
-        field("controller", &P::controller), field("lambda", &P::lambda, "1/s", Range{1e-3, 1e4}),
-        field("kd", &P::kd, "N*m*s/rad", Range{1e-6, 1e3}),
-        field("gamma", &P::gamma, "", Range{0, 1e6}), field("preset", &P::preset),
-        field("hold_stiffness", &P::hold_stiffness, "", Range{0, 1}));
-  }
 };
 
 void register_swing_leg_tracking(ModuleRegistry& registry);

@@ -19,17 +19,13 @@ struct EnsembleRequest {
 };
 
 struct MemberOutcome {
-  sim::WalkMetricsResult walk;  // robot 0, over the whole run
-  double sim_seconds = 0;
-  double wall_seconds = 0;  // the member's own run, in its worker
+  STRIDE_FIELDS(MemberOutcome);
+  STRIDE_FIELD(sim::WalkMetricsResult, walk);  // robot 0, over the whole run
+  STRIDE_FIELD(double, sim_seconds, "s") = 0;
+  STRIDE_FIELD(double, wall_seconds, "s") = 0;  // the member's own run, in its worker
 
   // Reflected: a member comes back from its worker in the framework's binary encoding.
   static constexpr std::string_view kTypeName = "MemberOutcome";
-  static constexpr auto fields() {
-    return std::make_tuple(field("walk", &MemberOutcome::walk),
-                           field("sim_seconds", &MemberOutcome::sim_seconds, "s"),
-                           field("wall_seconds", &MemberOutcome::wall_seconds, "s"));
-  }
 };
 
 // Member k of `r`: the scene loaded with r.physics, start k applied, run with its controllers.

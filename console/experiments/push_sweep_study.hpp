@@ -36,31 +36,28 @@ struct PushSweepOptions {
 };
 
 struct PushOutcome {
-  double impulse = 0, direction = 0;
-  double x_est = 0, v_est = 0;    // estimated CoM state along x, ground frame
-  double x_true = 0, v_true = 0;  // the simulator's
-  balance::Strategy predicted = balance::Strategy::none, predicted_true = balance::Strategy::none;
-  bool expected_recovery = false;       // the chosen strategy's region contains the estimate
-  bool truth_expects_recovery = false;  // the same from the simulator's CoM state
-  bool fell = false;
-  double foot_motion = 0;  // m, the larger move of the two feet
+  STRIDE_FIELDS(PushOutcome);
+  STRIDE_FIELD(double, impulse, "N*s") = 0;
+  STRIDE_FIELD(double, direction, "deg") = 0;
+  // estimated CoM state along x, ground frame
+  STRIDE_FIELD(double, x_est, "m") = 0;
+  STRIDE_FIELD(double, v_est, "m/s") = 0;
+  // the simulator's
+  STRIDE_FIELD(double, x_true, "m") = 0;
+  STRIDE_FIELD(double, v_true, "m/s") = 0;
+  STRIDE_FIELD(balance::Strategy, predicted) = balance::Strategy::none;
+  STRIDE_FIELD(balance::Strategy, predicted_true) = balance::Strategy::none;
+  // the chosen strategy's region contains the estimate
+  STRIDE_FIELD(bool, expected_recovery) = false;
+  STRIDE_FIELD(bool, truth_expects_recovery) = false;  // the same from the simulator's CoM state
+  STRIDE_FIELD(bool, fell) = false;
+  STRIDE_FIELD(double, foot_motion, "m") = 0;  // m, the larger move of the two feet
 
   bool recovered() const { return !fell && foot_motion <= kMaxFootMotion; }
   bool agree() const { return expected_recovery == recovered(); }
 
   // Reflected: a push comes back from its worker in the framework's binary encoding.
   static constexpr std::string_view kTypeName = "PushOutcome";
-  static constexpr auto fields() {
-    using P = PushOutcome;
-    return std::make_tuple(field("impulse", &P::impulse, "N*s"),
-                           field("direction", &P::direction, "deg"), field("x_est", &P::x_est, "m"),
-                           field("v_est", &P::v_est, "m/s"), field("x_true", &P::x_true, "m"),
-                           field("v_true", &P::v_true, "m/s"), field("predicted", &P::predicted),
-                           field("predicted_true", &P::predicted_true),
-                           field("expected_recovery", &P::expected_recovery),
-                           field("truth_expects_recovery", &P::truth_expects_recovery),
-                           field("fell", &P::fell), field("foot_motion", &P::foot_motion, "m"));
-  }
 };
 
 // Throws stride::UsageError for an unknown strategy or out-of-range times and counts.

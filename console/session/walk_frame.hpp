@@ -15,28 +15,67 @@
 namespace stride::console {
 
 struct WalkFrame {
-  double t = 0;          // s, simulation time
-  double pattern_t = 0;  // s since the walking pattern started (negative while standing; NaN
-                         // when robot 0 walks no pattern)
-  double hip_pitch_ref_l = 0, hip_pitch_mod_l = 0, hip_roll_ref_l = 0, hip_roll_mod_l = 0;
-  double hip_pitch_ref_r = 0, hip_pitch_mod_r = 0, hip_roll_ref_r = 0, hip_roll_mod_r = 0;
-  double ankle_pitch_ref_l = 0, ankle_pitch_mod_l = 0, ankle_roll_ref_l = 0, ankle_roll_mod_l = 0;
-  double ankle_pitch_ref_r = 0, ankle_pitch_mod_r = 0, ankle_roll_ref_r = 0, ankle_roll_mod_r = 0;
-  double est_pitch = 0, est_roll = 0, est_pitch_rate = 0, est_roll_rate = 0;  // TorsoState
-  double true_pitch = 0, true_roll = 0, true_pitch_rate = 0, true_roll_rate = 0;
-  double imu_pitch = 0, imu_roll = 0, gyro_pitch = 0, gyro_roll = 0;  // raw IMU
-  double waist_v_ref = 0, waist_v = 0;  // m/s forward: pattern and true torso
-  double torso_x = 0, torso_y = 0, feet_x = 0;
-  double cop_x = 0, cop_y = 0;          // m, world CoP from the FSRs (NaN when airborne)
-  double zmp_ref_x = 0, zmp_ref_y = 0;  // m, the pattern's ZMP (Eq. 3.16)
-  double shoulder_pitch_l = 0, shoulder_pitch_r = 0;  // rad, commanded
-  double knee_current_l = 0, knee_current_r = 0;      // A
-  double torso_z = 0, torso_yaw = 0, feet_y = 0;
-  double com_x = 0, com_y = 0, com_z = 0;
-  double fell = 0;  // 1 once the robot lies fallen
+  STRIDE_FIELDS(WalkFrame);
+  STRIDE_FIELD(double, t, "s") = 0;  // s, simulation time
+  // s since the walking pattern started (negative while standing; NaN when robot 0 walks no
+  // pattern)
+  STRIDE_FIELD(double, pattern_t, "s") = 0;
+  STRIDE_FIELD(double, hip_pitch_ref_l, "rad") = 0;
+  STRIDE_FIELD(double, hip_pitch_mod_l, "rad") = 0;
+  STRIDE_FIELD(double, hip_roll_ref_l, "rad") = 0;
+  STRIDE_FIELD(double, hip_roll_mod_l, "rad") = 0;
+  STRIDE_FIELD(double, hip_pitch_ref_r, "rad") = 0;
+  STRIDE_FIELD(double, hip_pitch_mod_r, "rad") = 0;
+  STRIDE_FIELD(double, hip_roll_ref_r, "rad") = 0;
+  STRIDE_FIELD(double, hip_roll_mod_r, "rad") = 0;
+  STRIDE_FIELD(double, ankle_pitch_ref_l, "rad") = 0;
+  STRIDE_FIELD(double, ankle_pitch_mod_l, "rad") = 0;
+  STRIDE_FIELD(double, ankle_roll_ref_l, "rad") = 0;
+  STRIDE_FIELD(double, ankle_roll_mod_l, "rad") = 0;
+  STRIDE_FIELD(double, ankle_pitch_ref_r, "rad") = 0;
+  STRIDE_FIELD(double, ankle_pitch_mod_r, "rad") = 0;
+  STRIDE_FIELD(double, ankle_roll_ref_r, "rad") = 0;
+  STRIDE_FIELD(double, ankle_roll_mod_r, "rad") = 0;
+  // TorsoState
+  STRIDE_FIELD(double, est_pitch, "rad") = 0;
+  STRIDE_FIELD(double, est_roll, "rad") = 0;
+  STRIDE_FIELD(double, est_pitch_rate, "rad/s") = 0;
+  STRIDE_FIELD(double, est_roll_rate, "rad/s") = 0;
+  STRIDE_FIELD(double, true_pitch, "rad") = 0;
+  STRIDE_FIELD(double, true_roll, "rad") = 0;
+  STRIDE_FIELD(double, true_pitch_rate, "rad/s") = 0;
+  STRIDE_FIELD(double, true_roll_rate, "rad/s") = 0;
+  // raw IMU
+  STRIDE_FIELD(double, imu_pitch, "rad") = 0;
+  STRIDE_FIELD(double, imu_roll, "rad") = 0;
+  STRIDE_FIELD(double, gyro_pitch, "rad/s") = 0;
+  STRIDE_FIELD(double, gyro_roll, "rad/s") = 0;
+  // m/s forward: pattern and true torso
+  STRIDE_FIELD(double, waist_v_ref, "m/s") = 0;
+  STRIDE_FIELD(double, waist_v, "m/s") = 0;
+  STRIDE_FIELD(double, torso_x, "m") = 0;
+  STRIDE_FIELD(double, torso_y, "m") = 0;
+  STRIDE_FIELD(double, feet_x, "m") = 0;
+  // m, world CoP from the FSRs (NaN when airborne)
+  STRIDE_FIELD(double, cop_x, "m") = 0;
+  STRIDE_FIELD(double, cop_y, "m") = 0;
+  // m, the pattern's ZMP (Eq. 3.16)
+  STRIDE_FIELD(double, zmp_ref_x, "m") = 0;
+  STRIDE_FIELD(double, zmp_ref_y, "m") = 0;
+  // rad, commanded
+  STRIDE_FIELD(double, shoulder_pitch_l, "rad") = 0;
+  STRIDE_FIELD(double, shoulder_pitch_r, "rad") = 0;
+  STRIDE_FIELD(double, knee_current_l, "A") = 0;
+  STRIDE_FIELD(double, knee_current_r, "A") = 0;
+  STRIDE_FIELD(double, torso_z, "m") = 0;
+  STRIDE_FIELD(double, torso_yaw, "rad") = 0;
+  STRIDE_FIELD(double, feet_y, "m") = 0;
+  STRIDE_FIELD(double, com_x, "m") = 0;
+  STRIDE_FIELD(double, com_y, "m") = 0;
+  STRIDE_FIELD(double, com_z, "m") = 0;
+  STRIDE_FIELD(double, fell) = 0;  // 1 once the robot lies fallen
 
   static constexpr std::string_view kTypeName = "WalkFrame";
-  static constexpr auto fields();
 };
 
 // The walking pattern robot 0's controller plays (behaviours/walking/modules/walk_pattern_replay).
@@ -79,47 +118,5 @@ class WalkFrameObserver {
   double origin_x_ = 0, origin_y_ = 0;
   WalkFrame frame_;
 };
-
-constexpr auto WalkFrame::fields() {
-  using F = WalkFrame;
-  return std::make_tuple(
-      field("t", &F::t, "s"), field("pattern_t", &F::pattern_t, "s"),
-      field("hip_pitch_ref_l", &F::hip_pitch_ref_l, "rad"),
-      field("hip_pitch_mod_l", &F::hip_pitch_mod_l, "rad"),
-      field("hip_roll_ref_l", &F::hip_roll_ref_l, "rad"),
-      field("hip_roll_mod_l", &F::hip_roll_mod_l, "rad"),
-      field("hip_pitch_ref_r", &F::hip_pitch_ref_r, "rad"),
-      field("hip_pitch_mod_r", &F::hip_pitch_mod_r, "rad"),
-      field("hip_roll_ref_r", &F::hip_roll_ref_r, "rad"),
-      field("hip_roll_mod_r", &F::hip_roll_mod_r, "rad"),
-      field("ankle_pitch_ref_l", &F::ankle_pitch_ref_l, "rad"),
-      field("ankle_pitch_mod_l", &F::ankle_pitch_mod_l, "rad"),
-      field("ankle_roll_ref_l", &F::ankle_roll_ref_l, "rad"),
-      field("ankle_roll_mod_l", &F::ankle_roll_mod_l, "rad"),
-      field("ankle_pitch_ref_r", &F::ankle_pitch_ref_r, "rad"),
-      field("ankle_pitch_mod_r", &F::ankle_pitch_mod_r, "rad"),
-      field("ankle_roll_ref_r", &F::ankle_roll_ref_r, "rad"),
-      field("ankle_roll_mod_r", &F::ankle_roll_mod_r, "rad"),
-      field("est_pitch", &F::est_pitch, "rad"), field("est_roll", &F::est_roll, "rad"),
-      field("est_pitch_rate", &F::est_pitch_rate, "rad/s"),
-      field("est_roll_rate", &F::est_roll_rate, "rad/s"),
-      field("true_pitch", &F::true_pitch, "rad"), field("true_roll", &F::true_roll, "rad"),
-      field("true_pitch_rate", &F::true_pitch_rate, "rad/s"),
-      field("true_roll_rate", &F::true_roll_rate, "rad/s"),
-      field("imu_pitch", &F::imu_pitch, "rad"), field("imu_roll", &F::imu_roll, "rad"),
-      field("gyro_pitch", &F::gyro_pitch, "rad/s"), field("gyro_roll", &F::gyro_roll, "rad/s"),
-      field("waist_v_ref", &F::waist_v_ref, "m/s"), field("waist_v", &F::waist_v, "m/s"),
-      field("torso_x", &F::torso_x, "m"), field("torso_y", &F::torso_y, "m"),
-      field("feet_x", &F::feet_x, "m"), field("cop_x", &F::cop_x, "m"),
-      field("cop_y", &F::cop_y, "m"), field("zmp_ref_x", &F::zmp_ref_x, "m"),
-      field("zmp_ref_y", &F::zmp_ref_y, "m"),
-      field("shoulder_pitch_l", &F::shoulder_pitch_l, "rad"),
-      field("shoulder_pitch_r", &F::shoulder_pitch_r, "rad"),
-      field("knee_current_l", &F::knee_current_l, "A"),
-      field("knee_current_r", &F::knee_current_r, "A"), field("torso_z", &F::torso_z, "m"),
-      field("torso_yaw", &F::torso_yaw, "rad"), field("feet_y", &F::feet_y, "m"),
-      field("com_x", &F::com_x, "m"), field("com_y", &F::com_y, "m"),
-      field("com_z", &F::com_z, "m"), field("fell", &F::fell));
-}
 
 }  // namespace stride::console

@@ -11,21 +11,16 @@
 namespace stride::sweep {
 
 struct RunRow {
-  std::int64_t run = -1;
-  bool ok = false;
-  std::string reason;              // why it failed (one line)
-  std::vector<std::string> cells;  // record columns, in order (empty when it failed)
-  std::string trace_csv;           // the run's trace, when the sweep asked for one
-  double seconds = 0;              // wall time of the run where it ran
-  std::int32_t attempts = 1;       // 2: its first worker died
+  STRIDE_FIELDS(RunRow);
+  STRIDE_FIELD(std::int64_t, run) = -1;
+  STRIDE_FIELD(bool, ok) = false;
+  STRIDE_FIELD(std::string, reason);              // why it failed (one line)
+  STRIDE_FIELD(std::vector<std::string>, cells);  // record columns, in order (empty when it failed)
+  STRIDE_FIELD(std::string, trace_csv);           // the run's trace, when the sweep asked for one
+  STRIDE_FIELD(double, seconds, "s") = 0;         // wall time of the run where it ran
+  STRIDE_FIELD(std::int32_t, attempts) = 1;       // 2: its first worker died
 
   static constexpr std::string_view kTypeName = "RunRow";
-  static constexpr auto fields() {
-    return std::make_tuple(
-        field("run", &RunRow::run), field("ok", &RunRow::ok), field("reason", &RunRow::reason),
-        field("cells", &RunRow::cells), field("trace_csv", &RunRow::trace_csv),
-        field("seconds", &RunRow::seconds, "s"), field("attempts", &RunRow::attempts));
-  }
 };
 
 inline std::string encode_row(const RunRow& row) {

@@ -1,16 +1,18 @@
 #pragma once
-// Field lists: a representation or parameter struct names its fields once, and every generic
-// operation (text, binary, CSV, type description) is derived from that list.
+// Field lists: a representation or parameter struct names each field once, where it declares it,
+// and every generic operation (text, binary, CSV, type description) is derived from that list.
 //
 //   struct Foo {
-//     double knee = 0;  Eigen::Vector2d cop = Eigen::Vector2d::Zero();
+//     STRIDE_FIELDS(Foo);
+//     STRIDE_FIELD(double, knee, "rad", Range{-0.09, 2.11}) = 0;
+//     STRIDE_FIELD(Eigen::Vector2d, cop, "m") = Eigen::Vector2d::Zero();
+//     STRIDE_FIELD((std::array<double, 26>), position, "rad", {}, hal::kJointNames){};
 //     static constexpr std::string_view kTypeName = "Foo";
-//     static constexpr auto fields() {
-//       return std::make_tuple(stride::field("knee", &Foo::knee, "rad", {-0.09, 2.11}),
-//                              stride::field("cop", &Foo::cop, "m"));
-//     }
 //   };
 //
+// STRIDE_FIELD(type, name, unit, range, element names) declares the member and its entry: the
+// arguments after the name are those of field() below (a type with a comma goes in parentheses),
+// and the initialiser follows the macro. Fields are listed in declaration order, one per line.
 // Types that cannot carry a member (e.g. robot/hal structs) specialise stride::Reflect<T> instead.
 #include <array>
 #include <limits>
@@ -19,6 +21,7 @@
 #include <string_view>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 namespace stride {
 
@@ -48,9 +51,32 @@ struct Field {
 template <class Owner, class Member>
 constexpr Field<Owner, Member> field(std::string_view name, Member Owner::*member,
                                      std::string_view unit = {},
-                                     std::optional<Range> range = std::nullopt) {
-  return {name, member, unit, range};
+                                     std::optional<Range> range = std::nullopt,
+                                     std::span<const std::string_view> element_names = {}) {
+  return {name, member, unit, range, element_names};
 }
+
+namespace field_list {
+
+// A field's slot: its line below STRIDE_FIELDS, the same in every translation unit.
+template <int Line>
+struct Slot {};
+inline constexpr int kMaxLines = 128;  // how far below STRIDE_FIELDS fields are looked for
+
+template <class T, int Line>
+constexpr auto entry_at() {
+  if constexpr (requires { T::stride_field(Slot<Line>{}); })
+    return std::make_tuple(T::stride_field(Slot<Line>{}));
+  else
+    return std::tuple<>{};
+}
+
+template <class T, int... Lines>
+constexpr auto entries(std::integer_sequence<int, Lines...>) {
+  return std::tuple_cat(entry_at<T, Lines>()...);
+}
+
+}  // namespace field_list
 
 // Default: the type lists its own fields; specialise for types you do not own.
 template <class T>
@@ -85,3 +111,30 @@ constexpr void for_each_field(F&& f) {
 }
 
 }  // namespace stride
+
+// Opens a struct's field list: fields() returns the STRIDE_FIELDs declared below, in order.
+#define STRIDE_FIELDS(TYPE)                                                  \
+  using StrideFieldOwner = TYPE;                                             \
+  static constexpr int stride_fields_line = __LINE__;                        \
+  template <class Owner = StrideFieldOwner>                                  \
+  static constexpr auto fields() {                                           \
+    return ::stride::field_list::entries<Owner>(                             \
+        std::make_integer_sequence<int, ::stride::field_list::kMaxLines>{}); \
+  }                                                                          \
+  static_assert(true)
+
+// Declares a member and its field entry; the initialiser, if any, follows the macro.
+#define STRIDE_FIELD(TYPE, NAME, ...)                                                             \
+  static_assert(__LINE__ - stride_fields_line < ::stride::field_list::kMaxLines,                  \
+                "STRIDE_FIELD " #NAME ": too far below STRIDE_FIELDS (raise kMaxLines)");         \
+  static constexpr auto stride_field(::stride::field_list::Slot<__LINE__ - stride_fields_line>) { \
+    return ::stride::field(#NAME, &StrideFieldOwner::NAME __VA_OPT__(, ) __VA_ARGS__);            \
+  }                                                                                               \
+  STRIDE_DETAIL_UNPARENTHESISED(TYPE) NAME
+
+// `(std::array<double, 3>)` -> `std::array<double, 3>`; `double` stays `double`.
+#define STRIDE_DETAIL_UNPARENTHESISED(X) STRIDE_DETAIL_ESCAPE(STRIDE_DETAIL_ISH X)
+#define STRIDE_DETAIL_ISH(...) STRIDE_DETAIL_ISH __VA_ARGS__
+#define STRIDE_DETAIL_ESCAPE(...) STRIDE_DETAIL_ESCAPE_(__VA_ARGS__)
+#define STRIDE_DETAIL_ESCAPE_(...) STRIDE_DETAIL_VAN##__VA_ARGS__
+#define STRIDE_DETAIL_VANSTRIDE_DETAIL_ISH

@@ -7,16 +7,13 @@
 namespace stride {
 
 struct InertialSensorData {
-  Eigen::Vector3d acc = Eigen::Vector3d::Zero();
-  Eigen::Vector3d gyro = Eigen::Vector3d::Zero();
-  Eigen::Vector2d angles = Eigen::Vector2d::Zero();  // torso roll (x), pitch (y)
+  STRIDE_FIELDS(InertialSensorData);
+  STRIDE_FIELD(Eigen::Vector3d, acc, "m/s^2") = Eigen::Vector3d::Zero();
+  STRIDE_FIELD(Eigen::Vector3d, gyro, "rad/s") = Eigen::Vector3d::Zero();
+  // torso roll (x), pitch (y)
+  STRIDE_FIELD(Eigen::Vector2d, angles, "rad") = Eigen::Vector2d::Zero();
 
   static constexpr std::string_view kTypeName = "InertialSensorData";
-  static constexpr auto fields() {
-    using I = InertialSensorData;
-    return std::make_tuple(field("acc", &I::acc, "m/s^2"), field("gyro", &I::gyro, "rad/s"),
-                           field("angles", &I::angles, "rad"));
-  }
 };
 
 }  // namespace stride

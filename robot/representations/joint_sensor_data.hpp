@@ -6,19 +6,13 @@
 namespace stride {
 
 struct JointSensorData {
-  std::array<double, hal::kNumJoints> position{};
-  std::array<double, hal::kNumJoints> current{};
-  std::array<double, hal::kNumJoints> temperature{};
-  std::array<double, hal::kNumJoints> stiffness{};
+  STRIDE_FIELDS(JointSensorData);
+  STRIDE_FIELD((std::array<double, hal::kNumJoints>), position, "rad", {}, hal::kJointNames){};
+  STRIDE_FIELD((std::array<double, hal::kNumJoints>), current, "A", {}, hal::kJointNames){};
+  STRIDE_FIELD((std::array<double, hal::kNumJoints>), temperature, "degC", {}, hal::kJointNames){};
+  STRIDE_FIELD((std::array<double, hal::kNumJoints>), stiffness, "", {}, hal::kJointNames){};
 
   static constexpr std::string_view kTypeName = "JointSensorData";
-  static constexpr auto fields() {
-    using J = JointSensorData;
-    return std::make_tuple(field("position", &J::position, "rad").named(hal::kJointNames),
-                           field("current", &J::current, "A").named(hal::kJointNames),
-                           field("temperature", &J::temperature, "degC").named(hal::kJointNames),
-                           field("stiffness", &J::stiffness).named(hal::kJointNames));
-  }
 };
 
 }  // namespace stride

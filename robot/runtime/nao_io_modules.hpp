@@ -13,15 +13,13 @@
 namespace stride {
 
 struct SensorConversionParameters {
-  double contact_force = 2.0;  // a foot is in contact when its FSRs sum to more than this
-  double fall_tilt = 0.8;      // IMU |roll| or |pitch| beyond this is a fall (robot:stop_on_fall)
+  STRIDE_FIELDS(SensorConversionParameters);
+  // a foot is in contact when its FSRs sum to more than this
+  STRIDE_FIELD(double, contact_force, "N", Range{0, 200}) = 2.0;
+  // IMU |roll| or |pitch| beyond this is a fall (robot:stop_on_fall)
+  STRIDE_FIELD(double, fall_tilt, "rad", Range{0.05, 3.2}) = 0.8;
 
   static constexpr std::string_view kTypeName = "SensorConversionParameters";
-  static constexpr auto fields() {
-    using P = SensorConversionParameters;
-    return std::make_tuple(field("contact_force", &P::contact_force, "N", Range{0, 200}),
-                           field("fall_tilt", &P::fall_tilt, "rad", Range{0.05, 3.2}));
-  }
 };
 
 // Centre of pressure of one foot: force-weighted mean of its 4 FSR positions (ankle frame);

@@ -10,17 +10,17 @@
 namespace stride {
 
 struct SimulatedTorsoPose {
-  double x = 0, y = 0, z = 0;           // m, world frame
-  double roll = 0, pitch = 0, yaw = 0;  // rad, Z-Y-X
+  STRIDE_FIELDS(SimulatedTorsoPose);
+  // m, world frame
+  STRIDE_FIELD(double, x, "m") = 0;
+  STRIDE_FIELD(double, y, "m") = 0;
+  STRIDE_FIELD(double, z, "m") = 0;
+  // rad, Z-Y-X
+  STRIDE_FIELD(double, roll, "rad") = 0;
+  STRIDE_FIELD(double, pitch, "rad") = 0;
+  STRIDE_FIELD(double, yaw, "rad") = 0;
 
   static constexpr std::string_view kTypeName = "SimulatedTorsoPose";
-  static constexpr auto fields() {
-    return std::make_tuple(
-        field("x", &SimulatedTorsoPose::x, "m"), field("y", &SimulatedTorsoPose::y, "m"),
-        field("z", &SimulatedTorsoPose::z, "m"), field("roll", &SimulatedTorsoPose::roll, "rad"),
-        field("pitch", &SimulatedTorsoPose::pitch, "rad"),
-        field("yaw", &SimulatedTorsoPose::yaw, "rad"));
-  }
 };
 
 // The first day simulation logs carry a SimulatedTorsoPose.

@@ -16,9 +16,9 @@ namespace {
 using test_support::error_of;
 
 struct Traced {
-  std::int64_t n = 0;
+  STRIDE_FIELDS(Traced);
+  STRIDE_FIELD(std::int64_t, n) = 0;
   static constexpr std::string_view kTypeName = "Traced";
-  static constexpr auto fields() { return std::make_tuple(field("n", &Traced::n)); }
 };
 
 // Prints and plots the counter every frame ("test:trace") and asks to pause on every 25th

@@ -12,22 +12,17 @@ namespace stride::test {
 namespace {
 
 struct SkewParameters {
-  double gain = 1.5;
-  std::int64_t mode = 2;
+  STRIDE_FIELDS(SkewParameters);
+  STRIDE_FIELD(double, gain) = 1.5;
+  STRIDE_FIELD(std::int64_t, mode) = 2;
   static constexpr std::string_view kTypeName = "SkewParameters";
-  static constexpr auto fields() {
-    return std::make_tuple(field("gain", &SkewParameters::gain),
-                           field("mode", &SkewParameters::mode));
-  }
 };
 
 struct SkewOutput {
-  double y = 0;
-  std::int64_t mode = 0;
+  STRIDE_FIELDS(SkewOutput);
+  STRIDE_FIELD(double, y) = 0;
+  STRIDE_FIELD(std::int64_t, mode) = 0;
   static constexpr std::string_view kTypeName = "SkewOutput";
-  static constexpr auto fields() {
-    return std::make_tuple(field("y", &SkewOutput::y), field("mode", &SkewOutput::mode));
-  }
 };
 
 // SkewOutput = (gain, mode) of its parameters; only this test knows either type.

@@ -71,11 +71,9 @@ TEST(CommandGuard, NanHoldsTheLastValidCommandNeverZero) {
 
 // Provides JointRequest like Stand, but throws from frame `fail_from` on (a parameter).
 struct ThrowParams {
-  std::int64_t fail_from = 3;
+  STRIDE_FIELDS(ThrowParams);
+  STRIDE_FIELD(std::int64_t, fail_from) = 3;
   static constexpr std::string_view kTypeName = "ThrowParams";
-  static constexpr auto fields() {
-    return std::make_tuple(field("fail_from", &ThrowParams::fail_from));
-  }
 };
 
 class ThrowingStand final : public Module {

@@ -49,15 +49,15 @@ class FakeLink final : public hal::HardwareLink {
 };
 
 struct Counter {
-  std::int64_t n = 0;
+  STRIDE_FIELDS(Counter);
+  STRIDE_FIELD(std::int64_t, n) = 0;
   static constexpr std::string_view kTypeName = "Counter";
-  static constexpr auto fields() { return std::make_tuple(field("n", &Counter::n)); }
 };
 
 struct Doubled {
-  std::int64_t n = 0;
+  STRIDE_FIELDS(Doubled);
+  STRIDE_FIELD(std::int64_t, n) = 0;
   static constexpr std::string_view kTypeName = "Doubled";
-  static constexpr auto fields() { return std::make_tuple(field("n", &Doubled::n)); }
 };
 
 // Counter = frame number.

@@ -61,9 +61,9 @@ TEST(Override, BuiltInsAndErrors) {
 }
 
 struct Shouted {
-  std::int64_t n = 0;
+  STRIDE_FIELDS(Shouted);
+  STRIDE_FIELD(std::int64_t, n) = 0;
   static constexpr std::string_view kTypeName = "Shouted";
-  static constexpr auto fields() { return std::make_tuple(field("n", &Shouted::n)); }
 };
 
 // Prints and plots the counter, and asks to stop at frame 5.

@@ -26,37 +26,28 @@ struct EnumNames<Colour> {
 namespace {
 
 struct Inner {
-  double a = 0;
-  Eigen::Vector2d v = Eigen::Vector2d::Zero();
+  STRIDE_FIELDS(Inner);
+  STRIDE_FIELD(double, a, "m", Range{-100, 100}) = 0;
+  STRIDE_FIELD(Eigen::Vector2d, v) = Eigen::Vector2d::Zero();
   static constexpr std::string_view kTypeName = "Inner";
-  static constexpr auto fields() {
-    return std::make_tuple(field("a", &Inner::a, "m", Range{-100, 100}), field("v", &Inner::v));
-  }
 };
 
 struct Everything {
-  bool flag = false;
-  std::int32_t i = 0;
-  std::int64_t l = 0;
-  std::uint8_t u = 0;
-  float f = 0;
-  double d = 0;
-  std::string s;
-  Colour colour = Colour::Red;
-  std::array<Inner, 2> inner{};
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-  Eigen::Vector3f vf = Eigen::Vector3f::Zero();
-  std::vector<double> list;
-  std::array<std::array<std::int32_t, 2>, 2> grid{};
+  STRIDE_FIELDS(Everything);
+  STRIDE_FIELD(bool, flag) = false;
+  STRIDE_FIELD(std::int32_t, i) = 0;
+  STRIDE_FIELD(std::int64_t, l) = 0;
+  STRIDE_FIELD(std::uint8_t, u) = 0;
+  STRIDE_FIELD(float, f) = 0;
+  STRIDE_FIELD(double, d) = 0;
+  STRIDE_FIELD(std::string, s);
+  STRIDE_FIELD(Colour, colour) = Colour::Red;
+  STRIDE_FIELD((std::array<Inner, 2>), inner){};
+  STRIDE_FIELD(Eigen::Matrix3d, m) = Eigen::Matrix3d::Zero();
+  STRIDE_FIELD(Eigen::Vector3f, vf) = Eigen::Vector3f::Zero();
+  STRIDE_FIELD(std::vector<double>, list);
+  STRIDE_FIELD((std::array<std::array<std::int32_t, 2>, 2>), grid){};
   static constexpr std::string_view kTypeName = "Everything";
-  static constexpr auto fields() {
-    using E = Everything;
-    return std::make_tuple(field("flag", &E::flag), field("i", &E::i), field("l", &E::l),
-                           field("u", &E::u), field("f", &E::f), field("d", &E::d),
-                           field("s", &E::s), field("colour", &E::colour),
-                           field("inner", &E::inner), field("m", &E::m), field("vf", &E::vf),
-                           field("list", &E::list), field("grid", &E::grid));
-  }
 };
 
 // Fills every leaf with a pseudo-random value of its kind (full-precision doubles, all enums).

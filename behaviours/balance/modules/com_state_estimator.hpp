@@ -16,33 +16,25 @@
 namespace stride::behaviours {
 
 struct ComStateEstimatorParameters {
-  double sigma_position = 1e-4;  // process noise std-devs per step (Q)
-  double sigma_velocity = 5e-2;
-  double sigma_zmp = 2e-2;  // the ZMP input (Eq. 7.4) is unknown: it is absorbed here
-  double sigma_com = 1e-3;  // measurement noise std-devs (R)
-  double sigma_cop = 5e-3;
-  double sigma_force = 0;  // accelerometer force measurement (N); 0 leaves it out
-  double g = 9.81;
-  bool use_imu_tilt = true;  // level the ground frame with the IMU instead of the left sole
+  STRIDE_FIELDS(ComStateEstimatorParameters);
+  // process noise std-devs per step (Q)
+  STRIDE_FIELD(double, sigma_position, "m", Range{0, 1}) = 1e-4;
+  STRIDE_FIELD(double, sigma_velocity, "m/s", Range{0, 10}) = 5e-2;
+  // the ZMP input (Eq. 7.4) is unknown: it is absorbed here
+  STRIDE_FIELD(double, sigma_zmp, "m", Range{0, 1}) = 2e-2;
+  STRIDE_FIELD(double, sigma_com, "m", Range{1e-9, 1}) = 1e-3;  // measurement noise std-devs (R)
+  STRIDE_FIELD(double, sigma_cop, "m", Range{1e-9, 1}) = 5e-3;
+  // accelerometer force measurement (N); 0 leaves it out
+  STRIDE_FIELD(double, sigma_force, "N", Range{0, 1e3}) = 0;
+  STRIDE_FIELD(double, g, "m/s^2", Range{0.1, 100}) = 9.81;
+  // level the ground frame with the IMU instead of the left sole
+  STRIDE_FIELD(bool, use_imu_tilt) = true;
   // Walking: the origin follows the stance sole (the foot whose FSRs carry more, by at least
   // support_hysteresis) instead of staying between the feet; the estimate moves with it.
-  bool follow_support = false;
-  double support_hysteresis = 5;  // N
+  STRIDE_FIELD(bool, follow_support) = false;
+  STRIDE_FIELD(double, support_hysteresis, "N", Range{0, 1000}) = 5;
 
   static constexpr std::string_view kTypeName = "ComStateEstimatorParameters";
-  static constexpr auto fields() {
-    using P = ComStateEstimatorParameters;
-    return std::make_tuple(
-        field("sigma_position", &P::sigma_position, "m", Range{0, 1}),
-        field("sigma_velocity", &P::sigma_velocity, "m/s", Range{0, 10}),
-        field("sigma_zmp", &P::sigma_zmp, "m", Range{0, 1}),
-        field("sigma_com", &P::sigma_com, "m", Range{1e-9, 1}),
-        field("sigma_cop", &P::sigma_cop, "m", Range{1e-9, 1}),
-        field("sigma_force", &P::sigma_force, "N", Range{0, 1e3}),
-        field("g", &P::g, "m/s^2", Range{0.1, 100}), field("use_imu_tilt", &P::use_imu_tilt),
-        field("follow_support", &P::follow_support),
-        field("support_hysteresis", &P::support_hysteresis, "N", Range{0, 1000}));
-  }
 };
 
 // Ground frame (see ComState) in the torso frame, from the measured LoLA joint angles.

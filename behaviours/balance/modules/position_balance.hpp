@@ -32,22 +32,16 @@ struct EnumNames<behaviours::BalanceChoice> {
 // What PositionBalance is doing: the strategy the Ch. 7 boundaries predicted for the last
 // disturbance, the one running, and the joint offsets it sends.
 struct PositionBalanceState {
-  balance::Strategy predicted = balance::Strategy::ankle;
-  balance::Strategy strategy = balance::Strategy::ankle;
-  double capture_point = 0;  // m, x + xdot / omega when the strategy was chosen
-  double demanded_zmp = 0;   // m, of Eq. 7.18 clipped by Eq. 7.19
-  double ankle_offset = 0;   // rad, added to both AnklePitch joints
-  double hat_angle = 0;      // rad, trunk forward of the posture (both HipPitch at posture - it)
+  STRIDE_FIELDS(PositionBalanceState);
+  STRIDE_FIELD(balance::Strategy, predicted) = balance::Strategy::ankle;
+  STRIDE_FIELD(balance::Strategy, strategy) = balance::Strategy::ankle;
+  STRIDE_FIELD(double, capture_point, "m") = 0;  // m, x + xdot / omega when the strategy was chosen
+  STRIDE_FIELD(double, demanded_zmp, "m") = 0;   // m, of Eq. 7.18 clipped by Eq. 7.19
+  STRIDE_FIELD(double, ankle_offset, "rad") = 0;  // rad, added to both AnklePitch joints
+  // rad, trunk forward of the posture (both HipPitch at posture - it)
+  STRIDE_FIELD(double, hat_angle, "rad") = 0;
 
   static constexpr std::string_view kTypeName = "PositionBalanceState";
-  static constexpr auto fields() {
-    using S = PositionBalanceState;
-    return std::make_tuple(field("predicted", &S::predicted), field("strategy", &S::strategy),
-                           field("capture_point", &S::capture_point, "m"),
-                           field("demanded_zmp", &S::demanded_zmp, "m"),
-                           field("ankle_offset", &S::ankle_offset, "rad"),
-                           field("hat_angle", &S::hat_angle, "rad"));
-  }
 };
 }  // namespace stride
 
@@ -57,38 +51,27 @@ namespace stride::behaviours {
 // 1 N m CoP error into 0.02 rad/s of ankle motion and lets go of an offset in 0.25 s (50 times
 // the first gain rocked the standing robot heel to toe with its CoP at the sole's edges).
 struct PositionBalanceParameters {
-  BalanceChoice strategy = BalanceChoice::automatic;
-  double kp = 72;                // 1/s^2, Eq. 7.16
-  double kd = 12;                // 1/s
-  double ankle_damping = 50;     // N m s/rad: CoP-error torque per ankle speed
-  double ankle_stiffness = 200;  // N m/rad: pulls the offset back to the posture
-  double max_ankle_offset = 0.25;
-  double margin = 0.01;  // m: the sole less this is the ZMP the ankle aims for
-  double tau_forward = 14;
-  double tau_backward = -14;
-  double trigger = 0.01;  // m: capture-point deviation that starts a HAT excursion
-  double hold_time = 0.5;
-  double return_time = 1.0;
-  bool keep_com = true;
-  double stiffness = 1;
+  STRIDE_FIELDS(PositionBalanceParameters);
+  STRIDE_FIELD(BalanceChoice, strategy) = BalanceChoice::automatic;
+  STRIDE_FIELD(double, kp, "1/s^2", Range{0, 1e4}) = 72;  // 1/s^2, Eq. 7.16
+  STRIDE_FIELD(double, kd, "1/s", Range{0, 1e3}) = 12;
+  // N m s/rad: CoP-error torque per ankle speed
+  STRIDE_FIELD(double, ankle_damping, "N*m*s/rad", Range{0.01, 1e3}) = 50;
+  // N m/rad: pulls the offset back to the posture
+  STRIDE_FIELD(double, ankle_stiffness, "N*m/rad", Range{0.01, 1e4}) = 200;
+  STRIDE_FIELD(double, max_ankle_offset, "rad", Range{0, 0.5}) = 0.25;
+  // m: the sole less this is the ZMP the ankle aims for
+  STRIDE_FIELD(double, margin, "m", Range{0, 0.05}) = 0.01;
+  STRIDE_FIELD(double, tau_forward, "N*m", Range{0.01, 100}) = 14;
+  STRIDE_FIELD(double, tau_backward, "N*m", Range{-100, -0.01}) = -14;
+  // m: capture-point deviation that starts a HAT excursion
+  STRIDE_FIELD(double, trigger, "m", Range{0, 1}) = 0.01;
+  STRIDE_FIELD(double, hold_time, "s", Range{0, 10}) = 0.5;
+  STRIDE_FIELD(double, return_time, "s", Range{0.01, 10}) = 1.0;
+  STRIDE_FIELD(bool, keep_com) = true;
+  STRIDE_FIELD(double, stiffness, "", Range{0, 1}) = 1;
 
   static constexpr std::string_view kTypeName = "PositionBalanceParameters";
-  static constexpr auto fields() {
-    using P = PositionBalanceParameters;
-    return std::make_tuple(
-        field("strategy", &P::strategy), field("kp", &P::kp, "1/s^2", Range{0, 1e4}),
-        field("kd", &P::kd, "1/s", Range{0, 1e3}),
-        field("ankle_damping", &P::ankle_damping, "N*m*s/rad", Range{0.01, 1e3}),
-        field("ankle_stiffness", &P::ankle_stiffness, "N*m/rad", Range{0.01, 1e4}),
-        field("max_ankle_offset", &P::max_ankle_offset, "rad", Range{0, 0.5}),
-        field("margin", &P::margin, "m", Range{0, 0.05}),
-        field("tau_forward", &P::tau_forward, "N*m", Range{0.01, 100}),
-        field("tau_backward", &P::tau_backward, "N*m", Range{-100, -0.01}),
-        field("trigger", &P::trigger, "m", Range{0, 1}),
-        field("hold_time", &P::hold_time, "s", Range{0, 10}),
-        field("return_time", &P::return_time, "s", Range{0.01, 10}),
-        field("keep_com", &P::keep_com), field("stiffness", &P::stiffness, "", Range{0, 1}));
-  }
 };
 
 // The ankle torque (N m, Eq. 7.10) that would move the CoP from `cop` to `zmp` (m) under `mass`.

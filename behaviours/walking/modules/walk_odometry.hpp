@@ -17,32 +17,27 @@
 namespace stride {
 
 struct WalkOdometry {
-  double x = 0.0;              // m, the torso's place from where the estimate started
-  double y = 0.0;              // m
-  double yaw = 0.0;            // rad, the torso's yaw: gyro z integrated, times gyro_scale
-  double gyro_yaw = 0.0;       // rad, the gyro's z integral as read
-  std::int64_t support = 0;    // 0 none yet, 1 left, 2 right
-  std::int64_t exchanges = 0;  // support exchanges counted
+  STRIDE_FIELDS(WalkOdometry);
+  // m, the torso's place from where the estimate started
+  STRIDE_FIELD(double, x, "m") = 0.0;
+  STRIDE_FIELD(double, y, "m") = 0.0;
+  // rad, the torso's yaw: gyro z integrated, times gyro_scale
+  STRIDE_FIELD(double, yaw, "rad") = 0.0;
+  STRIDE_FIELD(double, gyro_yaw, "rad") = 0.0;  // rad, the gyro's z integral as read
+  STRIDE_FIELD(std::int64_t, support) = 0;      // 0 none yet, 1 left, 2 right
+  STRIDE_FIELD(std::int64_t, exchanges) = 0;    // support exchanges counted
 
   static constexpr std::string_view kTypeName = "WalkOdometry";
-  static constexpr auto fields() {
-    using W = WalkOdometry;
-    return std::make_tuple(field("x", &W::x, "m"), field("y", &W::y, "m"),
-                           field("yaw", &W::yaw, "rad"), field("gyro_yaw", &W::gyro_yaw, "rad"),
-                           field("support", &W::support), field("exchanges", &W::exchanges));
-  }
 };
 
 struct WalkOdometryParameters {
-  double gyro_scale = 1.0;      // the gyro z integral's calibration
-  double exchange_share = 0.7;  // share of both feet's load that makes a foot the support
+  STRIDE_FIELDS(WalkOdometryParameters);
+  // the gyro z integral's calibration
+  STRIDE_FIELD(double, gyro_scale, "", Range{0.5, 2}) = 1.0;
+  // share of both feet's load that makes a foot the support
+  STRIDE_FIELD(double, exchange_share, "", Range{0.5, 1}) = 0.7;
 
   static constexpr std::string_view kTypeName = "WalkOdometryParameters";
-  static constexpr auto fields() {
-    using P = WalkOdometryParameters;
-    return std::make_tuple(field("gyro_scale", &P::gyro_scale, "", Range{0.5, 2}),
-                           field("exchange_share", &P::exchange_share, "", Range{0.5, 1}));
-  }
 };
 
 }  // namespace stride

@@ -27,46 +27,34 @@ namespace stride::behaviours {
 // Every Table 4.3 field is "nan" (or 0 for the step counts) to take the preset's value, or a
 // value that replaces it; walking::validate() judges the result (walk_pattern_parameters()).
 struct WalkParameters {
+  STRIDE_FIELDS(WalkParameters);
   static constexpr double kFromPreset = std::numeric_limits<double>::quiet_NaN();
 
-  WalkPreset preset = WalkPreset::medium;
-  double T_stride = kFromPreset;        // s
-  double tau_dsp = kFromPreset;         // double-support ratio
-  double A_l = kFromPreset;             // m
-  double z_min = kFromPreset;           // m
-  double z_max = kFromPreset;           // m
-  double d_0 = kFromPreset;             // m
-  double H_foot = kFromPreset;          // m
-  double V_min = kFromPreset;           // m/s, rhythmic phase
-  double V_max = kFromPreset;           // m/s, rhythmic phase
-  double z_conventional = kFromPreset;  // m, ConventionalWalk's constant height
-  int steps = 0;                        // waist steps; the feet swing steps + 1 times
-  int development_steps = 0;
-  int decay_steps = 0;
-  double start_delay = 2.0;         // s standing before the pattern starts
-  double interpolation_time = 1.0;  // s from the measured pose to the pattern's first pose
+  STRIDE_FIELD(WalkPreset, preset) = WalkPreset::medium;
+  STRIDE_FIELD(double, T_stride, "s") = kFromPreset;
+  STRIDE_FIELD(double, tau_dsp) = kFromPreset;  // double-support ratio
+  STRIDE_FIELD(double, A_l, "m") = kFromPreset;
+  STRIDE_FIELD(double, z_min, "m") = kFromPreset;
+  STRIDE_FIELD(double, z_max, "m") = kFromPreset;
+  STRIDE_FIELD(double, d_0, "m") = kFromPreset;
+  STRIDE_FIELD(double, H_foot, "m") = kFromPreset;
+  STRIDE_FIELD(double, V_min, "m/s") = kFromPreset;         // m/s, rhythmic phase
+  STRIDE_FIELD(double, V_max, "m/s") = kFromPreset;         // m/s, rhythmic phase
+  STRIDE_FIELD(double, z_conventional, "m") = kFromPreset;  // m, ConventionalWalk's constant height
+  // waist steps; the feet swing steps + 1 times
+  STRIDE_FIELD(int, steps, "", Range{0, 10000}) = 0;
+  STRIDE_FIELD(int, development_steps, "", Range{0, 1000}) = 0;
+  STRIDE_FIELD(int, decay_steps, "", Range{0, 1000}) = 0;
+  // s standing before the pattern starts
+  STRIDE_FIELD(double, start_delay, "s", Range{0, 3600}) = 2.0;
+  // s from the measured pose to the pattern's first pose
+  STRIDE_FIELD(double, interpolation_time, "s", Range{0, 3600}) = 1.0;
   // Heading hold (walking/steps/heading_hold.hpp): share of the measured heading (WalkOdometry)
   // each step turns back, at most heading_per_step; 0: the thesis' walk, straight in the plan.
-  double heading_gain = 0.0;
-  double heading_per_step = 0.1;  // rad
+  STRIDE_FIELD(double, heading_gain, "", Range{0, 2}) = 0.0;
+  STRIDE_FIELD(double, heading_per_step, "rad", Range{0, 0.3}) = 0.1;
 
   static constexpr std::string_view kTypeName = "WalkParameters";
-  static constexpr auto fields() {
-    using P = WalkParameters;
-    return std::make_tuple(field("preset", &P::preset), field("T_stride", &P::T_stride, "s"),
-                           field("tau_dsp", &P::tau_dsp), field("A_l", &P::A_l, "m"),
-                           field("z_min", &P::z_min, "m"), field("z_max", &P::z_max, "m"),
-                           field("d_0", &P::d_0, "m"), field("H_foot", &P::H_foot, "m"),
-                           field("V_min", &P::V_min, "m/s"), field("V_max", &P::V_max, "m/s"),
-                           field("z_conventional", &P::z_conventional, "m"),
-                           field("steps", &P::steps, "", Range{0, 10000}),
-                           field("development_steps", &P::development_steps, "", Range{0, 1000}),
-                           field("decay_steps", &P::decay_steps, "", Range{0, 1000}),
-                           field("start_delay", &P::start_delay, "s", Range{0, 3600}),
-                           field("interpolation_time", &P::interpolation_time, "s", Range{0, 3600}),
-                           field("heading_gain", &P::heading_gain, "", Range{0, 2}),
-                           field("heading_per_step", &P::heading_per_step, "rad", Range{0, 0.3}));
-  }
 };
 
 // The preset with the overrides applied; throws stride::Error naming the offending parameter.

@@ -14,24 +14,24 @@ namespace stride {
 inline constexpr int kWalkPlanSteps = 4;
 
 struct WalkPlan {
-  double t = 0.0;                                   // pattern time sampled (clamped to the walk)
-  std::array<double, 2> zmp{};                      // the ZMP reference of Eq. 3.16
-  std::int64_t support = 0;                         // 0 both feet, 1 left foot, 2 right foot
-  std::array<double, 3> left_foot{}, right_foot{};  // planned now (x, y, yaw)
-  std::int64_t steps = 0;  // footsteps ahead listed below (at most kWalkPlanSteps)
-  std::array<double, kWalkPlanSteps> step_x{}, step_y{}, step_yaw{};
-  std::array<std::int64_t, kWalkPlanSteps> step_foot{};  // the landing foot: 1 left, 2 right
+  STRIDE_FIELDS(WalkPlan);
+  // pattern time sampled (clamped to the walk)
+  STRIDE_FIELD(double, t, "s") = 0.0;
+  // the ZMP reference of Eq. 3.16
+  STRIDE_FIELD((std::array<double, 2>), zmp, "m"){};
+  // 0 both feet, 1 left foot, 2 right foot
+  STRIDE_FIELD(std::int64_t, support) = 0;
+  // planned now (x, y, yaw)
+  STRIDE_FIELD((std::array<double, 3>), left_foot){};
+  STRIDE_FIELD((std::array<double, 3>), right_foot){};
+  STRIDE_FIELD(std::int64_t, steps) = 0;  // footsteps ahead listed below (at most kWalkPlanSteps)
+  STRIDE_FIELD((std::array<double, kWalkPlanSteps>), step_x, "m"){};
+  STRIDE_FIELD((std::array<double, kWalkPlanSteps>), step_y, "m"){};
+  STRIDE_FIELD((std::array<double, kWalkPlanSteps>), step_yaw, "rad"){};
+  // the landing foot: 1 left, 2 right
+  STRIDE_FIELD((std::array<std::int64_t, kWalkPlanSteps>), step_foot){};
 
   static constexpr std::string_view kTypeName = "WalkPlan";
-  static constexpr auto fields() {
-    using W = WalkPlan;
-    return std::make_tuple(field("t", &W::t, "s"), field("zmp", &W::zmp, "m"),
-                           field("support", &W::support), field("left_foot", &W::left_foot),
-                           field("right_foot", &W::right_foot), field("steps", &W::steps),
-                           field("step_x", &W::step_x, "m"), field("step_y", &W::step_y, "m"),
-                           field("step_yaw", &W::step_yaw, "rad"),
-                           field("step_foot", &W::step_foot));
-  }
 };
 
 namespace walking {

@@ -22,38 +22,26 @@ struct EnumNames<WalkMode> {
 // walk: speeds of the torso in its own axes; target: walk to a pose of the odometry's frame
 // (WalkStatus.odometry) and stand there; stand brings the walk to a stop at the next chance.
 struct WalkRequest {
-  WalkMode mode = WalkMode::stand;
-  double forward = 0.0;            // m/s, x of the torso
-  double sideways = 0.0;           // m/s, left positive
-  double turn = 0.0;               // rad/s, counter-clockwise positive
-  std::array<double, 3> target{};  // x, y (m), yaw (rad)
+  STRIDE_FIELDS(WalkRequest);
+  STRIDE_FIELD(WalkMode, mode) = WalkMode::stand;
+  STRIDE_FIELD(double, forward, "m/s") = 0.0;       // m/s, x of the torso
+  STRIDE_FIELD(double, sideways, "m/s") = 0.0;      // m/s, left positive
+  STRIDE_FIELD(double, turn, "rad/s") = 0.0;        // rad/s, counter-clockwise positive
+  STRIDE_FIELD((std::array<double, 3>), target){};  // x, y (m), yaw (rad)
 
   static constexpr std::string_view kTypeName = "WalkRequest";
-  static constexpr auto fields() {
-    using W = WalkRequest;
-    return std::make_tuple(field("mode", &W::mode), field("forward", &W::forward, "m/s"),
-                           field("sideways", &W::sideways, "m/s"), field("turn", &W::turn, "rad/s"),
-                           field("target", &W::target));
-  }
 };
 
 // ScriptedWalkRequest's parameters: the request it provides (scenes change them with <at>).
 struct ScriptedWalkRequestParameters {
-  WalkMode mode = WalkMode::stand;
-  double forward = 0.0;   // m/s
-  double sideways = 0.0;  // m/s
-  double turn = 0.0;      // rad/s
-  std::array<double, 3> target{};
+  STRIDE_FIELDS(ScriptedWalkRequestParameters);
+  STRIDE_FIELD(WalkMode, mode) = WalkMode::stand;
+  STRIDE_FIELD(double, forward, "m/s", Range{-1, 1}) = 0.0;
+  STRIDE_FIELD(double, sideways, "m/s", Range{-1, 1}) = 0.0;
+  STRIDE_FIELD(double, turn, "rad/s", Range{-5, 5}) = 0.0;
+  STRIDE_FIELD((std::array<double, 3>), target, "", Range{-1000, 1000}){};
 
   static constexpr std::string_view kTypeName = "ScriptedWalkRequestParameters";
-  static constexpr auto fields() {
-    using W = ScriptedWalkRequestParameters;
-    return std::make_tuple(field("mode", &W::mode),
-                           field("forward", &W::forward, "m/s", Range{-1, 1}),
-                           field("sideways", &W::sideways, "m/s", Range{-1, 1}),
-                           field("turn", &W::turn, "rad/s", Range{-5, 5}),
-                           field("target", &W::target, "", Range{-1000, 1000}));
-  }
 };
 
 enum class WalkState { standing, walking, stopping };
@@ -69,35 +57,30 @@ struct EnumNames<WalkState> {
 // put the torso's walk frame (odometry: their integral, from where the module started), where the
 // plan has it (with the heading loop's turns) and the torso's yaw the gyro says.
 struct WalkStatus {
-  WalkState state = WalkState::standing;
-  double granted_forward = 0.0;      // m/s
-  double granted_sideways = 0.0;     // m/s
-  double granted_turn = 0.0;         // rad/s
-  bool limited = false;              // the request is beyond the walk's range (clamped)
-  bool ramping = false;              // the granted velocity is still on its way to the request
-  std::int64_t step = -1;            // waist step under way (-1 standing), counted per walk
-  std::int64_t steps = 0;            // waist steps planned since the module started
-  std::array<double, 3> odometry{};  // x, y (m) and yaw (rad) of the granted requests' path
-  std::array<double, 3> plan{};      // x, y, yaw of the walk frame as planned
-  double measured_yaw = 0.0;         // rad: the gyro's z rate integrated since the start
-  std::int64_t ik_beyond_limit_frames = 0;
-  std::int64_t shortened_steps = 0;  // plans halved to keep the leg IK within the limits
-  bool parameters_pending = false;   // changed pattern parameters wait for the next stand
+  STRIDE_FIELDS(WalkStatus);
+  STRIDE_FIELD(WalkState, state) = WalkState::standing;
+  STRIDE_FIELD(double, granted_forward, "m/s") = 0.0;
+  STRIDE_FIELD(double, granted_sideways, "m/s") = 0.0;
+  STRIDE_FIELD(double, granted_turn, "rad/s") = 0.0;
+  // the request is beyond the walk's range (clamped)
+  STRIDE_FIELD(bool, limited) = false;
+  // the granted velocity is still on its way to the request
+  STRIDE_FIELD(bool, ramping) = false;
+  // waist step under way (-1 standing), counted per walk
+  STRIDE_FIELD(std::int64_t, step) = -1;
+  STRIDE_FIELD(std::int64_t, steps) = 0;  // waist steps planned since the module started
+  // x, y (m) and yaw (rad) of the granted requests' path
+  STRIDE_FIELD((std::array<double, 3>), odometry){};
+  STRIDE_FIELD((std::array<double, 3>), plan){};  // x, y, yaw of the walk frame as planned
+  // rad: the gyro's z rate integrated since the start
+  STRIDE_FIELD(double, measured_yaw, "rad") = 0.0;
+  STRIDE_FIELD(std::int64_t, ik_beyond_limit_frames) = 0;
+  // plans halved to keep the leg IK within the limits
+  STRIDE_FIELD(std::int64_t, shortened_steps) = 0;
+  // changed pattern parameters wait for the next stand
+  STRIDE_FIELD(bool, parameters_pending) = false;
 
   static constexpr std::string_view kTypeName = "WalkStatus";
-  static constexpr auto fields() {
-    using W = WalkStatus;
-    return std::make_tuple(
-        field("state", &W::state), field("granted_forward", &W::granted_forward, "m/s"),
-        field("granted_sideways", &W::granted_sideways, "m/s"),
-        field("granted_turn", &W::granted_turn, "rad/s"), field("limited", &W::limited),
-        field("ramping", &W::ramping), field("step", &W::step), field("steps", &W::steps),
-        field("odometry", &W::odometry), field("plan", &W::plan),
-        field("measured_yaw", &W::measured_yaw, "rad"),
-        field("ik_beyond_limit_frames", &W::ik_beyond_limit_frames),
-        field("shortened_steps", &W::shortened_steps),
-        field("parameters_pending", &W::parameters_pending));
-  }
 };
 
 }  // namespace stride
