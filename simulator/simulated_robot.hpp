@@ -11,10 +11,10 @@
 
 #include "robot/hal/hardware_link.hpp"
 #include "robot/model/robot_model.hpp"
-#include "simulator/devices/device_description.hpp"
 #include "simulator/devices/fsr_device.hpp"
 #include "simulator/devices/imu_device.hpp"
 #include "simulator/devices/servo_bank.hpp"
+#include "simulator/scene/device_description.hpp"
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/world/physics_world.hpp"
 #include "simulator/world/robot_body.hpp"

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "robot/core/error.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/scene_parser.hpp"
 

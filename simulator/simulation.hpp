@@ -25,7 +25,7 @@ struct ActivePush {
 };
 
 // Throws stride::Error("push: force 1e+308 N outside [-1e+07, 1e+07]") for a push beyond the
-// limits (robot/model/physical_limits.hpp): |force| per axis, application point, duration.
+// limits (robot/core/physical_limits.hpp): |force| per axis, application point, duration.
 void check_push(const Eigen::Vector3d& force, const Eigen::Vector3d& at, double duration);
 
 class Simulation {

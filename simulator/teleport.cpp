@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "robot/core/error.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 
 namespace stride::sim {
 namespace {

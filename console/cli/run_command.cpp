@@ -35,7 +35,7 @@
 #include "simulator/render/movie_file.hpp"
 #include "simulator/render/snapshot.hpp"
 #include "simulator/render/views.hpp"
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 #include "simulator/scene/scene_parser.hpp"
 
 namespace stride::cli {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "robot/framework/enum_names.hpp"
-#include "simulator/devices/device_description.hpp"
+#include "simulator/scene/device_description.hpp"
 
 namespace stride::identify {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "console/identify/identify_log.hpp"
-#include "simulator/devices/device_description.hpp"
+#include "simulator/scene/device_description.hpp"
 
 namespace stride::identify {
 

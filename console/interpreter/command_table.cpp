@@ -5,8 +5,8 @@
 #include "console/interpreter/sweep_arguments.hpp"
 #include "console/interpreter/values.hpp"
 #include "robot/core/error.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "robot/core/quote.hpp"
-#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 

@@ -16,7 +16,7 @@
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 
 namespace stride::console {
 

@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "robot/core/error.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "robot/core/quote.hpp"
-#include "robot/model/physical_limits.hpp"
 
 namespace stride::console {
 

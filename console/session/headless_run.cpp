@@ -7,7 +7,7 @@
 #include "console/output/interrupt_flag.hpp"
 #include "console/progress/progress_line.hpp"
 #include "robot/core/error.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "simulator/simulation.hpp"
 
 namespace stride::console {

@@ -6,7 +6,7 @@
 #include <type_traits>
 
 #include "robot/core/error.hpp"
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 
 namespace stride::sweep {
 namespace {

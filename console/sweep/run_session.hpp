@@ -5,7 +5,7 @@
 
 #include "console/session/sim_session.hpp"
 #include "console/sweep/run_plan.hpp"
-#include "robot/runtime/controller_config.hpp"
+#include "robot/hal/controller_config.hpp"
 
 namespace stride::sweep {
 

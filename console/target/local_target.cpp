@@ -15,7 +15,7 @@
 #include "robot/runtime/replay.hpp"
 #include "simulator/render/png_file.hpp"
 #include "simulator/render/text_overlay.hpp"
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 #include "simulator/teleport.hpp"
 
 namespace stride::console {

@@ -8,8 +8,8 @@
 //   </robot_config>
 #include <string>
 
+#include "robot/hal/controller_config.hpp"
 #include "robot/hal/lola/lola_protocol.hpp"
-#include "robot/runtime/controller_config.hpp"
 
 namespace stride {
 

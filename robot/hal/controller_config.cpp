@@ -1,9 +1,9 @@
-#include "robot/runtime/controller_config.hpp"
+#include "robot/hal/controller_config.hpp"
 
 #include <algorithm>
 #include <map>
 
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 
 namespace stride {
 namespace {

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "robot/core/xml_element.hpp"
-#include "robot/runtime/runtime_config.hpp"
 
 namespace stride {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "robot/core/number_text.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 
 namespace stride::model {
 

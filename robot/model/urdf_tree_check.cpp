@@ -3,7 +3,7 @@
 #include <map>
 
 #include "robot/core/error.hpp"
-#include "robot/model/physical_limits.hpp"
+#include "robot/core/physical_limits.hpp"
 
 namespace stride::model {
 namespace {

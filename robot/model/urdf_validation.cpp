@@ -10,9 +10,9 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/number_text.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "robot/core/xml_error.hpp"
 #include "robot/model/inertia_check.hpp"
-#include "robot/model/physical_limits.hpp"
 #include "robot/model/urdf_tree_check.hpp"
 
 namespace stride::model {

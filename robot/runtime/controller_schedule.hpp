@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "robot/runtime/controller_config.hpp"
+#include "robot/hal/controller_config.hpp"
 #include "robot/runtime/runtime.hpp"
 
 namespace stride {
@@ -19,7 +19,8 @@ void check_changes(const ModuleRegistry& registry, const RuntimeConfig& config,
 
 class ControllerSchedule {
  public:
-  explicit ControllerSchedule(std::vector<ControllerChange> changes) : changes_(std::move(changes)) {}
+  explicit ControllerSchedule(std::vector<ControllerChange> changes)
+      : changes_(std::move(changes)) {}
   // Applies every change due at `time` (s since the controller started) not applied yet.
   void apply_due(Runtime& rt, double time);
   std::size_t applied() const { return next_; }

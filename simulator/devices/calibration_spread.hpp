@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "simulator/devices/device_description.hpp"
-#include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/device_description.hpp"
+#include "simulator/scene/noise_source.hpp"
 
 namespace stride::sim {
 

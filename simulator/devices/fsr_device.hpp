@@ -7,8 +7,8 @@
 
 #include <Eigen/Dense>
 
-#include "simulator/devices/device_description.hpp"
-#include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/device_description.hpp"
+#include "simulator/scene/noise_source.hpp"
 #include "simulator/world/physics_world.hpp"
 #include "simulator/world/robot_body.hpp"
 

@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
-#include "simulator/devices/device_description.hpp"
-#include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/device_description.hpp"
+#include "simulator/scene/noise_source.hpp"
 #include "simulator/world/robot_body.hpp"
 
 namespace stride::sim {

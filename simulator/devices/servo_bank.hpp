@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "robot/hal/actuator_frame.hpp"
-#include "simulator/devices/device_description.hpp"
+#include "simulator/scene/device_description.hpp"
 #include "simulator/world/robot_body.hpp"
 
 namespace stride::sim {

@@ -1,4 +1,4 @@
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 
 #include <cstdio>
 #include <numbers>

@@ -6,11 +6,11 @@
 
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "robot/core/xml_element.hpp"
 #include "robot/core/xml_error.hpp"
-#include "robot/model/physical_limits.hpp"
-#include "simulator/devices/device_description.hpp"
-#include "simulator/devices/device_parser.hpp"
+#include "simulator/scene/device_description.hpp"
+#include "simulator/scene/device_parser.hpp"
 
 namespace stride::sim {
 namespace {

@@ -2,7 +2,7 @@
 // Reading <motor>, <servo> and <calibration> overrides that a scene writes inside <robot> (the
 // device file itself is read by load_device_file, declared with the description).
 #include "robot/core/xml_element.hpp"
-#include "simulator/devices/device_description.hpp"
+#include "simulator/scene/device_description.hpp"
 
 namespace stride::sim {
 

@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "robot/runtime/controller_config.hpp"
-#include "simulator/devices/device_description.hpp"
+#include "robot/hal/controller_config.hpp"
+#include "simulator/scene/device_description.hpp"
 
 namespace stride::sim {
 

@@ -11,19 +11,19 @@
 #include "robot/core/data_dir.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/input_file.hpp"
+#include "robot/core/physical_limits.hpp"
 #include "robot/core/pose.hpp"
 #include "robot/core/xml_element.hpp"
 #include "robot/core/xml_error.hpp"
-#include "robot/model/physical_limits.hpp"
-#include "robot/runtime/controller_config.hpp"
-#include "simulator/devices/device_parser.hpp"
+#include "robot/hal/controller_config.hpp"
 #include "simulator/scene/contact_law_parser.hpp"
+#include "simulator/scene/contact_softness.hpp"
+#include "simulator/scene/device_parser.hpp"
 #include "simulator/scene/include_walk.hpp"
 #include "simulator/scene/mujoco_options.hpp"
 #include "simulator/scene/robot_override_file.hpp"
 #include "simulator/scene/scene_limits.hpp"
 #include "simulator/scene/solver_names.hpp"
-#include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
 namespace {

@@ -1,6 +1,6 @@
 #include "simulator/scene/start_perturbation.hpp"
 
-#include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/noise_source.hpp"
 
 namespace stride::sim {
 

@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "simulator/scene/contact_softness.hpp"
 #include "simulator/scene/scene_description.hpp"
-#include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
 

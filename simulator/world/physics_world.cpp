@@ -1,6 +1,6 @@
 #include "simulator/world/physics_world.hpp"
 
-#include "simulator/devices/noise_source.hpp"
+#include "simulator/scene/noise_source.hpp"
 
 namespace stride::sim {
 

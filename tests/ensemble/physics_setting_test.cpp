@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "robot/core/error.hpp"
+#include "simulator/scene/contact_softness.hpp"
 #include "simulator/scene/scene_parser.hpp"
-#include "simulator/world/contact_softness.hpp"
 
 namespace stride::sim {
 namespace {

@@ -1,7 +1,7 @@
 // The spring/damper <-> ERP/CFM mapping of a soft contact.
 #include <gtest/gtest.h>
 
-#include "simulator/world/contact_softness.hpp"
+#include "simulator/scene/contact_softness.hpp"
 
 namespace stride {
 namespace {

@@ -1,7 +1,7 @@
 // Every run report names the solver setting its figures come from.
 #include <gtest/gtest.h>
 
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {

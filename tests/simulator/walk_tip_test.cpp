@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "simulator/run_report.hpp"
+#include "simulator/report/run_report.hpp"
 #include "tests/simulator/sim_test_util.hpp"
 
 namespace stride {
