@@ -162,11 +162,6 @@ void SimulatedRobot::apply_commands() {
   }
 }
 
-bool SimulatedRobot::read(hal::SensorFrame& out) {
-  out = delivered_;
-  return true;
-}
-
 void SimulatedRobot::before_physics_step() {
   servos_->apply(*body_);
 }

@@ -1,6 +1,7 @@
 #pragma once
-// One robot in the world with its devices; it is the in-process hardware link its controller
-// talks to (the same interface LoLA provides on a real NAO).
+// One robot in the world with its devices: its sensors sampled at each control frame, its servos
+// following the commands written to it (the Simulation hands the one to the robot's controller and
+// writes the other, hal::FrameController).
 #include <array>
 #include <deque>
 #include <memory>
@@ -9,7 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "robot/hal/hardware_link.hpp"
+#include "robot/hal/actuator_frame.hpp"
+#include "robot/hal/sensor_frame.hpp"
 #include "robot/model/robot_model.hpp"
 #include "simulator/devices/fsr_device.hpp"
 #include "simulator/devices/imu_device.hpp"
@@ -25,17 +27,17 @@ struct TorsoPose {
   double x = 0, y = 0, z = 0, roll = 0, pitch = 0, yaw = 0;
 };
 
-class SimulatedRobot : public hal::HardwareLink {
+class SimulatedRobot {
  public:
   // Loads the URDF and device file named by `placement`; throws stride::Error naming file:line.
   SimulatedRobot(PhysicsWorld& world, const RobotPlacement& placement, int index,
                  std::uint64_t scene_seed);
 
-  // hal::HardwareLink: in process, the frame is ready whenever the simulation says so.
-  bool read(hal::SensorFrame& out) override;
-  void write(const hal::ActuatorFrame& in) override;
-  double period() const override { return devices_.period; }
-  std::string name() const override { return placement_.name; }
+  // The commands its servos follow from now on. Throws stride::Error naming the joint for a
+  // non-finite value (a controller bug).
+  void write(const hal::ActuatorFrame& in);
+  double period() const { return devices_.period; }  // control period, s
+  std::string name() const { return placement_.name; }
 
   void before_physics_step();
   void after_physics_step(const PhysicsWorld& world);

@@ -92,6 +92,8 @@ void Simulation::build() {
   robots_ = std::move(robots);
   steps_per_frame_ = std::move(steps_per_frame);
   controllers_.resize(robots_.size());
+  observers_.resize(robots_.size());
+  commands_.assign(robots_.size(), hal::ActuatorFrame());
   walk_metrics_.assign(robots_.size(), WalkMetrics());
   landing_metrics_.assign(robots_.size(), LandingMetrics());
   pushes_ = std::move(pushes);
@@ -133,12 +135,12 @@ void Simulation::push(const std::string& robot, const std::string& link,
   pushes_.push_back({r, l, force, at, time(), time() + duration});
 }
 
+// One physics step and the control frames closing with it. In a robot's frame:
+//   physics steps -> sense -> controller frame -> actuate -> record (-> physics steps ...)
 void Simulation::step() {
-  const double t = time();
-  for (const ActivePush& p : pushes_) {
-    if (t < p.start - 1e-12 || t >= p.end - 1e-12) continue;
-    robots_[p.robot]->mutable_body().add_force(p.link, p.force, p.at);
-  }
+  // Physics: pushes act, the servos drive toward their commands, the world integrates, the devices
+  // measure what they average over a frame (currents, sole loads).
+  apply_pushes();
   for (auto& r : robots_) r->before_physics_step();
   check_inputs();
   world_->step();
@@ -147,10 +149,25 @@ void Simulation::step() {
   check_finite();
   for (size_t i = 0; i < robots_.size(); ++i) {
     if (steps_ % static_cast<std::uint64_t>(steps_per_frame_[i]) != 0) continue;
-    robots_[i]->sample_sensors(time(), scene_.physics.gravity);
-    walk_metrics_[i].observe(*robots_[i]);
-    landing_metrics_[i].observe(*robots_[i]);
-    if (controllers_[i]) controllers_[i](*robots_[i]);
+    SimulatedRobot& robot = *robots_[i];
+    // Sense: the frame's readings (noise, delay, quantisation as the scene switches them).
+    robot.sample_sensors(time(), scene_.physics.gravity);
+    // Controller frame, sensors in and commands out; actuate: the servos take the commands.
+    hal::ActuatorFrame& commands = commands_[i];
+    if (controllers_[i] && controllers_[i]->control_frame(robot.latest_sensors(), commands))
+      robot.write(commands);
+    // Record: the walk's and landings' figures from the plant's true state, then whoever watches.
+    walk_metrics_[i].observe(robot);
+    landing_metrics_[i].observe(robot);
+    if (observers_[i]) observers_[i](robot);
+  }
+}
+
+void Simulation::apply_pushes() {
+  const double t = time();
+  for (const ActivePush& p : pushes_) {
+    if (t < p.start - 1e-12 || t >= p.end - 1e-12) continue;
+    robots_[p.robot]->mutable_body().add_force(p.link, p.force, p.at);
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A scene brought to life: the physics world, its robots and their devices, timed pushes, and the
-// control-frame clock that controllers attach to.
+// control-frame clock that controllers attach to. step() is the one place that says what happens
+// in a frame, in order (docs/architecture.md "One frame").
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "robot/hal/frame_controller.hpp"
 #include "simulator/landing_metrics.hpp"
 #include "simulator/scene/scene_description.hpp"
 #include "simulator/simulated_robot.hpp"
@@ -40,7 +42,8 @@ class Simulation {
   // Rebuilds the world from the same description: the same run follows, bit for bit.
   void reset();
 
-  // One physics step; control frames close (sensors sampled, controllers called) on their ticks.
+  // One physics step, and the control frame of every robot whose frame closes with it: sense,
+  // the controller's frame, actuate, record (simulation.cpp says it in that order).
   void step();
   // Steps for `seconds`; `after_step`, if given, is called after every physics step.
   void run_for(double seconds, const std::function<void()>& after_step = {});
@@ -55,9 +58,17 @@ class Simulation {
   const SimulatedRobot& robot(int i) const { return *robots_[i]; }
   int robot_index(const std::string& name) const;  // -1 if absent
 
-  // Called at every control frame of robot `i`, after its sensors are sampled.
-  using Controller = std::function<void(SimulatedRobot&)>;
-  void set_controller(int robot, Controller c) { controllers_[robot] = std::move(c); }
+  // The controller of robot `i` (not owned; nullptr: none, the servos hold their commands): at
+  // each of the robot's control frames it gets the frame's sensors and gives the commands back.
+  void set_controller(int robot, hal::FrameController* controller) {
+    controllers_.at(robot) = controller;
+  }
+  // Called at every control frame of robot `i` after its controller: how recorders and sweeps
+  // watch a run. Kept across reset().
+  using FrameObserver = std::function<void(SimulatedRobot&)>;
+  void set_frame_observer(int robot, FrameObserver observer) {
+    observers_.at(robot) = std::move(observer);
+  }
 
   // A force on a robot's link for `duration` seconds from now. Throws if the link is unknown or
   // a value is outside the limits (check_push).
@@ -75,6 +86,7 @@ class Simulation {
   void build();
   static void check_scene_size(const RobotPlacement& placement, const model::RobotModel& m,
                                int& bodies, int& geoms);
+  void apply_pushes();
   void check_inputs() const;
   void check_finite() const;
 
@@ -82,7 +94,9 @@ class Simulation {
   std::unique_ptr<PhysicsWorld> world_;
   std::vector<std::unique_ptr<SimulatedRobot>> robots_;
   std::vector<int> steps_per_frame_;
-  std::vector<Controller> controllers_;
+  std::vector<hal::FrameController*> controllers_;
+  std::vector<FrameObserver> observers_;
+  std::vector<hal::ActuatorFrame> commands_;  // per robot: its controller's latest frame
   std::vector<WalkMetrics> walk_metrics_;
   std::vector<LandingMetrics> landing_metrics_;
   std::vector<ActivePush> pushes_;

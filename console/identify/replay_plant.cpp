@@ -71,27 +71,46 @@ RobotFiles robot_files(const std::string& robot) {
   return f;
 }
 
-std::vector<LoggedFrame> replay(const IdentifyLog& log, const RobotFiles& robot,
-                                const std::vector<sim::ServoOverride>& servos) {
-  sim::Simulation sim(replay_scene(log, robot, servos));
-  std::vector<LoggedFrame> out(log.frames.size());
-  std::size_t k = 0;
-  sim.set_controller(0, [&](sim::SimulatedRobot& r) {
-    if (k >= out.size()) return;
-    const hal::SensorFrame& s = r.latest_sensors();
-    LoggedFrame& f = out[k];
+namespace {
+
+// The simulated robot's controller in a replay: the log's commands, one a frame, and what the
+// robot sensed at each of those frames kept.
+class LogPlayer final : public hal::FrameController {
+ public:
+  LogPlayer(const IdentifyLog& log, std::vector<LoggedFrame>& out) : log_(log), out_(out) {}
+
+  bool control_frame(const hal::SensorFrame& s, hal::ActuatorFrame& commands) override {
+    if (played_ >= out_.size()) return false;
+    LoggedFrame& f = out_[played_];
     f.time = s.time;
     f.position = s.position;
     f.current = s.current;
     f.gyro = s.gyroscope;
     f.angles = s.angles;
     f.fsr = s.fsr;
-    f.command = log.frames[k].command;
-    r.write(f.command);
-    ++k;
-  });
+    f.command = log_.frames[played_].command;
+    commands = f.command;
+    ++played_;
+    return true;
+  }
+  std::size_t played() const { return played_; }
+
+ private:
+  const IdentifyLog& log_;
+  std::vector<LoggedFrame>& out_;
+  std::size_t played_ = 0;
+};
+
+}  // namespace
+
+std::vector<LoggedFrame> replay(const IdentifyLog& log, const RobotFiles& robot,
+                                const std::vector<sim::ServoOverride>& servos) {
+  sim::Simulation sim(replay_scene(log, robot, servos));
+  std::vector<LoggedFrame> out(log.frames.size());
+  LogPlayer player(log, out);
+  sim.set_controller(0, &player);
   sim.run_for(static_cast<double>(log.frames.size()) * log.period);
-  if (k < out.size()) out.resize(k);
+  if (player.played() < out.size()) out.resize(player.played());
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include "behaviours/parameter_notes.hpp"
 #include "robot/core/error.hpp"
 #include "robot/core/quote.hpp"
+#include "robot/hal/handed_frame_link.hpp"
 #include "robot/runtime/controller_schedule.hpp"
 #include "robot/runtime/world_pose.hpp"
 #include "simulator/lola/lola_codec_link.hpp"
@@ -39,6 +40,41 @@ std::vector<std::string> parameter_notes(const Runtime& runtime) {
   return notes;
 }
 
+// Robot i's controller in this process, each part built on the one before: the link the
+// simulation's frames are handed to, LoLA's packets around it if asked, the runtime, the runtime
+// paced by the frames. The simulation calls control_frame(), which also logs the torso's true pose
+// beside the blackboard (read only: the run is the same with or without).
+struct SimSession::Controller final : hal::FrameController {
+  Controller(const ModuleRegistry& registry, const RuntimeConfig& config,
+             const sim::SimulatedRobot& robot, bool through_packets,
+             std::vector<ControllerChange> changes, Slot& pose_slot)
+      : handed(robot.period(), robot.name()),
+        packets(through_packets
+                    ? std::make_unique<sim::LolaCodecLink>(handed, robot.latest_commands())
+                    : nullptr),
+        runtime(registry, config, link()),
+        paced(runtime, handed, std::move(changes)),
+        robot(robot),
+        pose(slot_value<SimulatedTorsoPose>(pose_slot)) {
+    runtime.log_also(std::string(SimulatedTorsoPose::kTypeName), &pose_slot);
+  }
+
+  hal::HardwareLink& link() { return packets ? *packets : handed; }
+
+  bool control_frame(const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) override {
+    const sim::TorsoPose p = robot.torso_pose();
+    pose = {p.x, p.y, p.z, p.roll, p.pitch, p.yaw};
+    return paced.control_frame(sensors, commands);
+  }
+
+  hal::HandedFrameLink handed;
+  std::unique_ptr<hal::HardwareLink> packets;  // null: the runtime reads the handed link
+  Runtime runtime;
+  PacedRuntime paced;
+  const sim::SimulatedRobot& robot;
+  SimulatedTorsoPose& pose;
+};
+
 SimSession::SimSession(const std::string& scene_path, std::optional<std::uint64_t> seed,
                        const std::vector<ParameterOverride>& overrides)
     : SimSession(load(scene_path, seed, overrides)) {}
@@ -56,8 +92,16 @@ SimSession::SimSession(sim::SceneDescription scene) {
 }
 
 SimSession::~SimSession() {
-  runtimes_.clear();  // runtimes hold references to the simulated robots
+  controllers_.clear();  // they hold references to the simulated robots
   sim_.reset();
+}
+
+Runtime* SimSession::runtime(int robot) {
+  return controllers_[robot] ? &controllers_[robot]->runtime : nullptr;
+}
+
+PacedRuntime* SimSession::paced_runtime(int robot) {
+  return controllers_[robot] ? &controllers_[robot]->paced : nullptr;
 }
 
 RuntimeConfig SimSession::runtime_config(int robot) const {
@@ -71,57 +115,32 @@ void SimSession::attach_controllers() {
   for (int i = 0; i < sim_->robot_count(); ++i)
     models_.push_back(std::make_shared<const model::RobotModel>(sim_->robot(i).model()));
   through_packets_.resize(sim_->robot_count());
-  std::vector<std::unique_ptr<hal::HardwareLink>> links(sim_->robot_count());
-  std::vector<std::unique_ptr<Runtime>> runtimes(sim_->robot_count());
+  poses_.resize(sim_->robot_count());
+  std::vector<std::unique_ptr<Controller>> controllers(sim_->robot_count());
   for (int i = 0; i < sim_->robot_count(); ++i) {
     const auto& placement = sim_->scene().robots[i];
     if (!placement.has_controller) continue;
-    if (through_packets_[i]) links[i] = std::make_unique<sim::LolaCodecLink>(sim_->robot(i));
-    hal::HardwareLink& link = links[i] ? *links[i] : sim_->robot(i);
+    // The log records where the torso stood; the slot outlives the runtimes that log it.
+    if (!poses_[i]) poses_[i] = make_slot<SimulatedTorsoPose>();
     try {
-      runtimes[i] = std::make_unique<Runtime>(registry_, runtime_config(i), link);
+      controllers[i] = std::make_unique<Controller>(registry_, runtime_config(i), sim_->robot(i),
+                                                    through_packets_[i],
+                                                    placement.controller.changes, *poses_[i]);
     } catch (const Error& e) {
       throw input_error_at(placement.file, placement.line,
                            "<controller>: " + std::string(e.what()));
     }
-    check_changes(registry_, runtime_config(i), link, placement.controller.changes);
+    check_changes(registry_, runtime_config(i), controllers[i]->link(),
+                  placement.controller.changes);
   }
-  runtimes_.clear();  // before the links they use
-  packet_links_ = std::move(links);
-  runtimes_ = std::move(runtimes);
-  observers_.resize(sim_->robot_count());
-  poses_.resize(sim_->robot_count());
-  for (int i = 0; i < sim_->robot_count(); ++i) {
-    Runtime* rt = runtimes_[i].get();
-    const FrameObserver* observer = &observers_[i];
-    if (!rt) {
-      sim_->set_controller(i, [observer](sim::SimulatedRobot& robot) {
-        if (*observer) (*observer)(robot);
-      });
-      continue;
-    }
-    sim::Simulation* sim = sim_.get();
-    // The log records where the torso stood (read only: the run is the same with or without).
-    if (!poses_[i]) poses_[i] = make_slot<SimulatedTorsoPose>();
-    rt->log_also(std::string(SimulatedTorsoPose::kTypeName), poses_[i].get());
-    auto& pose = slot_value<SimulatedTorsoPose>(*poses_[i]);
-    sim_->set_controller(
-        i, [rt, sim, observer, &pose,
-            schedule = ControllerSchedule(sim_->scene().robots[i].controller.changes)](
-               sim::SimulatedRobot& robot) mutable {
-          schedule.apply_due(*rt, sim->time());
-          const sim::TorsoPose p = robot.torso_pose();
-          pose = {p.x, p.y, p.z, p.roll, p.pitch, p.yaw};
-          rt->step();
-          if (*observer) (*observer)(robot);
-        });
-  }
+  for (int i = 0; i < sim_->robot_count(); ++i) sim_->set_controller(i, controllers[i].get());
+  controllers_ = std::move(controllers);
 }
 
 void SimSession::set_frame_observer(int robot, FrameObserver observer) {
-  if (robot < 0 || robot >= static_cast<int>(observers_.size()))
+  if (robot < 0 || robot >= sim_->robot_count())
     throw Error("no robot " + std::to_string(robot) + " in this scene");
-  observers_[robot] = std::move(observer);
+  sim_->set_frame_observer(robot, std::move(observer));
 }
 
 void SimSession::route_through_lola_packets(int robot) {
@@ -130,7 +149,8 @@ void SimSession::route_through_lola_packets(int robot) {
 }
 
 void SimSession::reset() {
-  runtimes_.clear();
+  for (int i = 0; i < sim_->robot_count(); ++i) sim_->set_controller(i, nullptr);
+  controllers_.clear();
   sim_->reset();
   attach_controllers();
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A loaded scene with its controllers: the Simulation plus one Runtime per robot that has a
-// <controller>, stepped together. Console commands and `stride run` act on this.
+// <controller>, each handed its robot's frames (PacedRuntime, a hal::FrameController), so the
+// Simulation's step() runs them. Console commands and `stride run` act on this.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "robot/framework/module_registry.hpp"
+#include "robot/runtime/paced_runtime.hpp"
 #include "robot/runtime/parameter_override.hpp"
 #include "robot/runtime/runtime.hpp"
 #include "simulator/simulation.hpp"
@@ -38,7 +40,9 @@ class SimSession {
   sim::Simulation& simulation() { return *sim_; }
   const sim::Simulation& simulation() const { return *sim_; }
   // The controller of robot `i`, or nullptr if the scene gives it none.
-  Runtime* runtime(int robot) { return runtimes_[robot].get(); }
+  Runtime* runtime(int robot);
+  // Robot `i`'s runtime as the simulation drives it, or nullptr (for a test that times its step).
+  PacedRuntime* paced_runtime(int robot);
   const ModuleRegistry& registry() const { return registry_; }
   RuntimeConfig runtime_config(int robot) const;
 
@@ -49,9 +53,9 @@ class SimSession {
   // (sim::LolaCodecLink): float32 values, LoLA's units and clock, as over the socket.
   void route_through_lola_packets(int robot);
 
-  // Called at every control frame of robot `i`, after its controller (timed changes, then the
-  // runtime's step) ran: how recorders and sweeps watch a run without replacing its controller.
-  using FrameObserver = std::function<void(sim::SimulatedRobot&)>;
+  // Called at every control frame of robot `i`, after its controller ran (Simulation's
+  // FrameObserver): how recorders and sweeps watch a run without replacing its controller.
+  using FrameObserver = sim::Simulation::FrameObserver;
   void set_frame_observer(int robot, FrameObserver observer);
 
  private:
@@ -60,12 +64,11 @@ class SimSession {
   ModuleRegistry registry_;
   std::unique_ptr<sim::Simulation> sim_;
   std::vector<std::shared_ptr<const model::RobotModel>> models_;
-  std::vector<std::unique_ptr<hal::HardwareLink>> packet_links_;  // per robot, or null
   std::vector<bool> through_packets_;
   // Per robot with a controller: its torso's world pose at the frame, logged beside the blackboard.
   std::vector<std::unique_ptr<Slot>> poses_;
-  std::vector<std::unique_ptr<Runtime>> runtimes_;
-  std::vector<FrameObserver> observers_;  // per robot; empty: none
+  struct Controller;  // one robot's: its links, runtime, and what the simulation calls
+  std::vector<std::unique_ptr<Controller>> controllers_;  // per robot; null: none
 };
 
 }  // namespace stride::console

@@ -89,14 +89,15 @@ void LolaRobot::wait_for_connection() {
   }
 }
 
-void LolaRobot::exchange(sim::SimulatedRobot& robot) {
-  server_->exchange(robot);
+bool LolaRobot::control_frame(const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) {
+  const bool answered = server_->control_frame(sensors, commands);
   const sim::LolaServeReport& r = server_->report();
   if (r.clients_lost > 0 || r.bad_packets > 0)
     throw Error(failure(r.bad_packets > 0 ? "sent a packet that did not decode at " +
-                                                std::to_string(robot.latest_sensors().time) + " s"
+                                                std::to_string(sensors.time) + " s"
                         : r.events.empty() ? "lost"
                                            : r.events.back()));
+  return answered;
 }
 
 void LolaRobot::finish() {

@@ -14,7 +14,7 @@
 
 namespace stride::sweep {
 
-class LolaRobot {
+class LolaRobot final : public hal::FrameController {
  public:
   // Seconds the robot process gets to connect (a frame's answer: sim::kLockstepAnswerTimeout).
   static constexpr double kConnectTimeout = 30;
@@ -26,8 +26,9 @@ class LolaRobot {
   LolaRobot(const LolaRobot&) = delete;
   LolaRobot& operator=(const LolaRobot&) = delete;
 
-  // One control frame over the socket; throws when the robot process is gone or answered nothing.
-  void exchange(sim::SimulatedRobot& robot);
+  // One control frame over the socket (the simulation calls it as robot 0's controller); throws
+  // when the robot process is gone or answered nothing.
+  bool control_frame(const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) override;
   // After the run: throws if any frame went without a valid answer; then ends the robot process.
   void finish();
 

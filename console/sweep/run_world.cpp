@@ -36,12 +36,8 @@ RunWorld::~RunWorld() {
 }
 
 void RunWorld::set_frame_observer(console::SimSession::FrameObserver observer) {
-  if (!lola_) return session_->set_frame_observer(0, std::move(observer));
-  LolaRobot* lola = lola_.get();
-  session_->simulation().set_controller(0, [lola, observer](sim::SimulatedRobot& r) {
-    lola->exchange(r);
-    if (observer) observer(r);
-  });
+  if (lola_) session_->simulation().set_controller(0, lola_.get());
+  session_->set_frame_observer(0, std::move(observer));
 }
 
 void RunWorld::finish() {

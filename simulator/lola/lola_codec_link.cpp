@@ -7,14 +7,15 @@
 
 namespace stride::sim {
 
-LolaCodecLink::LolaCodecLink(SimulatedRobot& robot)
-    : robot_(robot), commands_(robot.latest_commands()) {
+LolaCodecLink::LolaCodecLink(hal::HardwareLink& inner, const hal::ActuatorFrame& commands)
+    : inner_(inner), commands_(commands) {
   packet_.reserve(1024);
 }
 
 bool LolaCodecLink::read(hal::SensorFrame& out) {
-  simulated_sensor_packet(robot_.latest_sensors(), packet_);  // as the server sends it
-  hal::lola::decode_sensor_packet(packet_, out);              // as LolaLink receives it
+  if (!inner_.read(sensors_)) return false;
+  simulated_sensor_packet(sensors_, packet_);     // as the server sends it
+  hal::lola::decode_sensor_packet(packet_, out);  // as LolaLink receives it
   out.time = hal::lola::lola_frame_time(packets_++, period());
   return true;
 }
@@ -22,7 +23,7 @@ bool LolaCodecLink::read(hal::SensorFrame& out) {
 void LolaCodecLink::write(const hal::ActuatorFrame& in) {
   hal::lola::encode_actuator_packet(in, packet_);  // as LolaLink sends it
   apply_lola_answer(packet_, commands_);           // as the server applies it
-  robot_.write(commands_);
+  inner_.write(commands_);
 }
 
 }  // namespace stride::sim

@@ -60,7 +60,7 @@ void LolaServer::lose_client(double time, const std::string& why) {
 }
 
 // Answers that arrived after their frame's deadline: the robot's latest wish, applied now.
-bool LolaServer::drain_late_answers(SimulatedRobot& robot) {
+bool LolaServer::drain_late_answers() {
   for (;;) {
     std::span<const char> packet;
     std::string error;
@@ -69,7 +69,7 @@ bool LolaServer::drain_late_answers(SimulatedRobot& robot) {
       ++report_.late_answers;
       try {
         apply_lola_answer(packet, commands_);
-        robot.write(commands_);
+        answered_ = true;
       } catch (const Error&) {
         ++report_.bad_packets;
       }
@@ -87,7 +87,7 @@ bool LolaServer::drain_late_answers(SimulatedRobot& robot) {
 }
 
 // Waits for this frame's answer until `deadline`; false when the client is gone.
-bool LolaServer::take_answer(SimulatedRobot& robot, hal::Deadline deadline) {
+bool LolaServer::take_answer(double time, hal::Deadline deadline) {
   for (;;) {
     std::span<const char> packet;
     std::string error;
@@ -95,17 +95,16 @@ bool LolaServer::take_answer(SimulatedRobot& robot, hal::Deadline deadline) {
     if (r == hal::lola::PacketStream::Result::Packet) {
       try {
         apply_lola_answer(packet, commands_);
-        robot.write(commands_);
+        answered_ = true;
         ++report_.exchanged;
       } catch (const Error& e) {
-        if (report_.bad_packets++ == 0) event(robot.latest_sensors().time, e.what());
+        if (report_.bad_packets++ == 0) event(time, e.what());
         if (report_.pacing == LolaPacing::Realtime) ++report_.missed;
       }
       return true;
     }
     if (r == hal::lola::PacketStream::Result::Malformed) {
-      if (report_.bad_packets++ == 0)
-        event(robot.latest_sensors().time, "LoLA actuator packet: " + error);
+      if (report_.bad_packets++ == 0) event(time, "LoLA actuator packet: " + error);
       if (report_.pacing == LolaPacing::Realtime) ++report_.missed;
       return true;
     }
@@ -116,8 +115,7 @@ bool LolaServer::take_answer(SimulatedRobot& robot, hal::Deadline deadline) {
         return true;
       }
       lose_client(
-          robot.latest_sensors().time,
-          "no answer for " + std::to_string(static_cast<int>(kLockstepAnswerTimeout)) + " s");
+          time, "no answer for " + std::to_string(static_cast<int>(kLockstepAnswerTimeout)) + " s");
       return true;
     }
     if (wait == hal::UnixSocket::Wait::Interrupted) continue;
@@ -128,8 +126,15 @@ bool LolaServer::take_answer(SimulatedRobot& robot, hal::Deadline deadline) {
   }
 }
 
-void LolaServer::exchange(SimulatedRobot& robot) {
-  const double time = robot.latest_sensors().time;
+bool LolaServer::control_frame(const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) {
+  answered_ = false;
+  exchange(sensors);
+  if (answered_) commands = commands_;
+  return answered_;
+}
+
+void LolaServer::exchange(const hal::SensorFrame& sensors) {
+  const double time = sensors.time;
   const bool realtime = report_.pacing == LolaPacing::Realtime;
   Clock::time_point due = Clock::now();
   if (realtime) {
@@ -150,8 +155,8 @@ void LolaServer::exchange(SimulatedRobot& robot) {
       return;
     }
   }
-  if (realtime && !drain_late_answers(robot)) return lose_client(time, "it closed the socket");
-  simulated_sensor_packet(robot.latest_sensors(), packet_);
+  if (realtime && !drain_late_answers()) return lose_client(time, "it closed the socket");
+  simulated_sensor_packet(sensors, packet_);
   const auto deadline =
       realtime ? due + seconds(report_.period) : Clock::now() + seconds(kLockstepAnswerTimeout);
   // Bounded like the robot's writes: a robot that stopped reading (SIGSTOP) never blocks the world.
@@ -163,7 +168,7 @@ void LolaServer::exchange(SimulatedRobot& robot) {
     case hal::UnixSocket::Send::Sent:
       break;
   }
-  if (!take_answer(robot, deadline)) lose_client(time, "it closed the socket");
+  if (!take_answer(time, deadline)) lose_client(time, "it closed the socket");
 }
 
 std::string lola_report_text(const LolaServeReport& r) {

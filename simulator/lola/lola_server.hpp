@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "robot/framework/reflect.hpp"
+#include "robot/hal/frame_controller.hpp"
 #include "robot/hal/lola/packet_stream.hpp"
 #include "robot/hal/unix_socket.hpp"
 #include "simulator/simulated_robot.hpp"
@@ -50,7 +51,7 @@ struct LolaServeReport {
   std::vector<std::string> events;  // connections and losses, as reported
 };
 
-class LolaServer {
+class LolaServer final : public hal::FrameController {
  public:
   // Listens at `path` (see hal::UnixListener); `events` gets one line per event as it happens.
   LolaServer(const std::string& path, LolaPacing pacing, const SimulatedRobot& robot,
@@ -58,8 +59,9 @@ class LolaServer {
 
   // Blocks until a client connects; throws stride::Error after `timeout` seconds.
   void wait_for_client(double timeout);
-  // One control frame of `robot` (called as its controller): its sensors out, its commands in.
-  void exchange(SimulatedRobot& robot);
+  // One control frame of the robot it serves (the Simulation calls it as the robot's controller):
+  // the sensors out to the client, the commands its answer gives back (false: none this frame).
+  bool control_frame(const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) override;
 
   // The scene was put back at its start (its client's controller restarted): the commands an
   // empty answer keeps are the restarted robot's own from now on.
@@ -71,14 +73,16 @@ class LolaServer {
   using Clock = std::chrono::steady_clock;
   void event(double time, const std::string& what);
   void lose_client(double time, const std::string& why);
-  bool drain_late_answers(SimulatedRobot& robot);
-  bool take_answer(SimulatedRobot& robot, hal::Deadline deadline);
+  bool drain_late_answers();
+  bool take_answer(double time, hal::Deadline deadline);
+  void exchange(const hal::SensorFrame& sensors);
 
   hal::UnixListener listener_;
   std::optional<hal::UnixSocket> client_;
   hal::lola::PacketStream stream_;
   std::string packet_;
-  hal::ActuatorFrame commands_;
+  hal::ActuatorFrame commands_;  // the client's latest wish
+  bool answered_ = false;        // commands_ changed in this frame
   std::ostream& events_;
   std::optional<Clock::time_point> start_;  // realtime: when frame 0's packet was due
   LolaServeReport report_;

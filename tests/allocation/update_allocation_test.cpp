@@ -17,6 +17,7 @@
 #include "robot/app/robot_config.hpp"
 #include "simulator/scene/scene_parser.hpp"
 #include "tests/allocation/allocation_counter.hpp"
+#include "tests/simulator/frame_hook.hpp"
 
 namespace stride {
 namespace {
@@ -109,14 +110,18 @@ Runtime& runtime_with_swaps(console::SimSession& session, const Case& c) {
 long allocations_while_running(const Case& c) {
   console::SimSession session(scene_of(c));
   auto& sim = session.simulation();
-  Runtime& rt = runtime_with_swaps(session, c);
-  sim.set_controller(0, [&](sim::SimulatedRobot&) {
+  runtime_with_swaps(session, c);
+  PacedRuntime& rt = *session.paced_runtime(0);
+  test::FrameHook hook([&](const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) {
     counting = sim.time() > c.warm_up;
-    rt.step();
+    const bool written = rt.step(sensors, commands);
     counting = false;
+    return written;
   });
+  sim.set_controller(0, &hook);
   allocations = 0;
   sim.run_for(c.seconds);
+  sim.set_controller(0, nullptr);
   return allocations;
 }
 

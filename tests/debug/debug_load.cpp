@@ -44,6 +44,7 @@
 #include "robot/core/thread_priority.hpp"
 #include "robot/debug/server.hpp"
 #include "simulator/scene/scene_parser.hpp"
+#include "tests/simulator/frame_hook.hpp"
 #include "timed_boundary.hpp"
 
 extern char** environ;
@@ -226,7 +227,7 @@ std::uint64_t steal_on(int cpu) {
 }
 
 // Runs the walking robot in real time for `seconds`, timing each control step and its boundary.
-void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
+void run_block(sim::Simulation& sim, PacedRuntime& rt, const test::TimedBoundary& boundary,
                const debug::DebugServer& server, int cpu, double seconds, Condition& c) {
   const double period = kPeriod;
   const std::uint64_t allocations_before = server.stats().loop_allocations;
@@ -235,14 +236,14 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
   const std::uint64_t steal_before = steal_on(cpu);
   const double start = sim.time();
   const auto wall_start = Clock::now();
-  sim.set_controller(0, [&](sim::SimulatedRobot&) {
+  test::FrameHook hook([&](const hal::SensorFrame& sensors, hal::ActuatorFrame& commands) {
     const std::uint64_t made = server.stats().loop_allocations;  // read outside the timed step
     const auto now = Clock::now();
     const double due = sim.time() - start;
     const double late = std::chrono::duration<double>(now - wall_start).count() - due;
     if (late > period) ++c.missed;
     const double cpu_start = thread_cpu_us();
-    rt.step();
+    const bool written = rt.step(sensors, commands);
     c.compute_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - now).count());
     if (due >= 1.5) c.steady_us.push_back(c.compute_us.back());
     c.due_s.push_back(due);
@@ -250,13 +251,16 @@ void run_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& bou
     c.cpu_us.push_back(thread_cpu_us() - cpu_start);
     c.boundary_us.push_back(static_cast<double>(boundary.last_ns.load()) * 1e-3);
     ++c.frames;
+    return written;
   });
+  sim.set_controller(0, &hook);
   while (sim.time() - start < seconds - 1e-9) {
     sim.step();
     std::this_thread::sleep_until(wall_start +
                                   std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(sim.time() - start)));
   }
+  sim.set_controller(0, nullptr);  // the hook ends with this block
   ++c.blocks;
   c.allocations += server.stats().loop_allocations - allocations_before;
   c.interrupts += interrupts_on(cpu) - interrupts_before;
@@ -372,7 +376,7 @@ class Twin {
 };
 
 // One loaded block: the peers run `block` seconds, the loop one more so they end within it.
-void run_loaded_block(sim::Simulation& sim, Runtime& rt, const test::TimedBoundary& boundary,
+void run_loaded_block(sim::Simulation& sim, PacedRuntime& rt, const test::TimedBoundary& boundary,
                       const debug::DebugServer& server, const Options& o, const Peers& where,
                       const std::string& at, Condition& c, PeerTotals& totals) {
   std::vector<Peer> peers;
@@ -499,7 +503,8 @@ int main(int argc, char** argv) {
     if (argc == 3 && std::string(argv[1]) == "--serve-twin") return serve_twin(argv[2]);
     const Options o = read_options(argc, argv);
     console::SimSession session(scene_of(o.scene));
-    Runtime& rt = *session.runtime(0);
+    Runtime& runtime = *session.runtime(0);
+    PacedRuntime& rt = *session.paced_runtime(0);
     debug::ServerOptions options;
     options.listen = {"127.0.0.1", 0};
     options.robot = "nao";
@@ -519,7 +524,7 @@ int main(int argc, char** argv) {
     if (o.twin) other = std::make_unique<Twin>(o, where);
     if (o.cpu >= 0) set_cpu_affinity(where.loop_cpu, "debug_load: --cpu");
     test::TimedBoundary boundary(server.boundary());
-    rt.set_frame_boundary(&boundary);
+    runtime.set_frame_boundary(&boundary);
     where.at = server.endpoint().text();
     if (o.rt_priority > 0) set_realtime_priority(o.rt_priority, "debug_load: --rt-priority");
     auto& sim = session.simulation();
@@ -536,7 +541,7 @@ int main(int argc, char** argv) {
       run_block(sim, rt, boundary, server, o.cpu, o.block, quiet);
     }
     other.reset();
-    rt.set_frame_boundary(nullptr);
+    runtime.set_frame_boundary(nullptr);
     fs::remove_all(where.dir);
     return report(o, quiet, loaded, twin, totals, server, log_lines) ? 0 : 1;
   } catch (const Error& e) {

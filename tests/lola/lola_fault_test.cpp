@@ -169,7 +169,7 @@ TEST(LolaFaults, RobotKilledMidWalkTheSimulatorReportsAndHolds) {
   ChildProcess robot({test::kStrideRobot, "--config", test::kHipConfig, "--lola", socket},
                      "kill_robot");
   server.wait_for_client(60);
-  sim.set_controller(0, [&](sim::SimulatedRobot& r) { server.exchange(r); });
+  sim.set_controller(0, &server);
   const hal::ActuatorFrame initial = sim.robot(0).latest_commands();
   sim.run_for(2.5);  // standing up, then walking
   robot.signal(SIGKILL);
