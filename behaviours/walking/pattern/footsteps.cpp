@@ -13,6 +13,11 @@ Eigen::Vector2d cycloid(double distance, double H_foot, double progress) {
   return {alpha * (psi - std::sin(psi)), 0.5 * H_foot * (1.0 - std::cos(psi))};  // Eq. 3.11
 }
 
+double cycloid_share(double progress) {
+  const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
+  return (psi - std::sin(psi)) / (2.0 * std::numbers::pi);  // Eq. 3.11
+}
+
 double synchronisation_alpha(const SpeedLevel& level, double T_s, double T_d) {
   return (level.V_max * T_d + level.V_min * T_s) / std::numbers::pi;  // Eq. 3.15
 }

@@ -18,6 +18,8 @@ enum class SupportPhase { kDouble, kLeft, kRight };
 // The cycloid of Eq. 3.11 with delta = H_foot / (2 alpha): (forward, up) after `progress` in [0, 1]
 // of a swing that covers `distance`. alpha = distance / (2 pi) (Eq. 3.15 in the rhythmic phase).
 Eigen::Vector2d cycloid(double distance, double H_foot, double progress);
+// The share of the cycloid's way covered at progress 0..1 (its x over the distance).
+double cycloid_share(double progress);
 
 // alpha = (V_max T_d + V_min T_s) / pi (Eq. 3.15), one rhythmic step length over pi.
 double synchronisation_alpha(const SpeedLevel& level, double T_s, double T_d);

@@ -1,21 +1,11 @@
 #include "behaviours/walking/steps/heading_hold.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
+#include "behaviours/walking/pattern/footsteps.hpp"
 #include "robot/model/kinematics/nao_leg_ik.hpp"
 
 namespace stride::walking {
-
-namespace {
-// The swing foot's cycloid share, here for the frame's turn over a swing (no thesis equation: its
-// walk is straight): the turn starts and ends at rest.
-double cycloid_share(double u) {
-  const double psi = 2.0 * std::numbers::pi * std::clamp(u, 0.0, 1.0);
-  return (psi - std::sin(psi)) / (2.0 * std::numbers::pi);
-}
-}  // namespace
 
 Eigen::Vector3d HeadingHold::in_frame(const Eigen::Vector3d& p) const {
   const Eigen::Vector2d xy = point_in(frame_, p.x(), p.y());
@@ -59,6 +49,7 @@ HeldJoints HeadingHold::joints(const PatternSample& s, double t, double measured
   }
   if (single(s.support) && s.support != support_) start_swing(s, t, settings);
   support_ = s.support;
+  // The frame turns by the swing foot's cycloid share, so the turn starts and ends at rest.
   if (single(s.support))
     turn_frame(settings.single_support > 0.0
                    ? cycloid_share((t - swing_start_) / settings.single_support)

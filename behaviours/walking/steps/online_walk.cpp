@@ -160,14 +160,12 @@ FootPose OnlineWalk::foot(Foot f, double t) const {
   const FootPose from = at(j - 1), to = at(j + 1);
   const double progress = (t - swing_start(j)) / (swing_end(j) - swing_start(j));
   // The cycloid's share of the way along the walk (it does not depend on the distance).
-  const double psi = 2.0 * std::numbers::pi * std::clamp(progress, 0.0, 1.0);
-  const double share = (psi - std::sin(psi)) / (2.0 * std::numbers::pi);  // Eq. 3.11
+  const double share = cycloid_share(progress);
   FootPose out;
   // The share of Eq. 3.11 along the walk; the sideways move and the turn (no thesis equation: its
   // walk is straight) by the same law within the first early_share_ of the swing, so that the hip
   // roll and the one HipYawPitch servo, which lag, have arrived when the foot lands.
-  const double early_psi = 2.0 * std::numbers::pi * std::clamp(progress / early_share_, 0.0, 1.0);
-  const double early = (early_psi - std::sin(early_psi)) / (2.0 * std::numbers::pi);
+  const double early = cycloid_share(progress / early_share_);
   const double heading = foothold(j - 1).yaw;
   const Eigen::Vector2d d = (to.position - from.position).head<2>();
   const Eigen::Vector2d local = rotated(-heading, d.x(), d.y());
